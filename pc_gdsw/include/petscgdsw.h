@@ -1,0 +1,53 @@
+/* petscgdsw.h: the two-level overlapping Schwarz preconditioner PCGDSW for PETSc.
+   Use it from any PETSc program with -pc_type gdsw after either
+     -dll_append <prefix>/lib/libpetscgdsw.so   (no code change), or
+     PCGDSWRegister()                           (when linking the library). */
+#ifndef PETSCGDSW_H
+#define PETSCGDSW_H
+
+#include <petscksp.h>
+
+#define PCGDSW "gdsw"
+
+/* Which coarse space the second level uses. */
+typedef enum {
+  PC_GDSW_COARSE_GDSW,  /* null space on every interface component (faces, edges, vertices) */
+  PC_GDSW_COARSE_RGDSW, /* reduced dimension: null space on coarse nodes, partition of unity */
+  PC_GDSW_COARSE_NONE   /* one-level overlapping Schwarz (OS1) */
+} PCGDSWCoarseSpaceType;
+PETSC_EXTERN const char *const PCGDSWCoarseSpaceTypes[];
+
+/* How the two levels are combined. */
+typedef enum {
+  PC_GDSW_ADDITIVE,      /* M^-1 = Phi A0^-1 Phi^T + sum_i R_i^T A_i^-1 R_i (symmetric) */
+  PC_GDSW_MULTIPLICATIVE /* coarse correction first, local solves on the updated residual */
+} PCGDSWCombinationType;
+PETSC_EXTERN const char *const PCGDSWCombinationTypes[];
+
+/* How local corrections are prolongated. */
+typedef enum {
+  PC_GDSW_FIRST_LEVEL_ADDITIVE,  /* R_i^T on the whole overlapping subdomain (symmetric) */
+  PC_GDSW_FIRST_LEVEL_RESTRICTED /* restricted to a nonoverlapping partition (RAS) */
+} PCGDSWFirstLevelType;
+PETSC_EXTERN const char *const PCGDSWFirstLevelTypes[];
+
+PETSC_EXTERN PetscErrorCode PCGDSWRegister(void);
+
+/* Element-based decomposition from an application that knows its mesh: for each of the n
+   subdomains this rank holds, the global dofs in the closure of its cells (nonoverlap[i]) and,
+   optionally, those of its geometric overlap (overlap[i], a superset; pass NULL to let the PC
+   add -pc_gdsw_overlap layers of the matrix graph). Index sets must hold whole nodes. */
+PETSC_EXTERN PetscErrorCode PCGDSWSetSubdomains(PC, PetscInt, IS[], IS[]);
+PETSC_EXTERN PetscErrorCode PCGDSWSetSubdomainsPerRank(PC, PetscInt);
+PETSC_EXTERN PetscErrorCode PCGDSWSetOverlap(PC, PetscInt);
+PETSC_EXTERN PetscErrorCode PCGDSWSetCoarseSpaceType(PC, PCGDSWCoarseSpaceType);
+PETSC_EXTERN PetscErrorCode PCGDSWSetRotations(PC, PetscBool);
+
+/* After setup: the coarse basis Phi (global dofs x coarse dofs), the coarse operator A0, and
+   counts of interface components across all ranks. References are borrowed. */
+PETSC_EXTERN PetscErrorCode PCGDSWGetCoarseBasis(PC, Mat *);
+PETSC_EXTERN PetscErrorCode PCGDSWGetCoarseOperator(PC, Mat *);
+PETSC_EXTERN PetscErrorCode PCGDSWGetInterfaceCounts(PC, PetscInt *, PetscInt *, PetscInt *);
+PETSC_EXTERN PetscErrorCode PCGDSWGetCoarseKSP(PC, KSP *);
+
+#endif

@@ -1,0 +1,333 @@
+/* Coarse basis Phi = [Phi_I; Phi_Gamma] (seed eq. 2): Phi_Gamma restricts the null space to
+   each interface component (GDSW) or spreads it from each coarse node with a partition of
+   unity (RGDSW); Phi_I = -A_II^{-1} A_IGamma Phi_Gamma is its discrete harmonic extension,
+   computed by independent interior solves in each subdomain. */
+#include "gdswimpl.h"
+#include <algorithm>
+#include <cmath>
+
+using gdsw::CoarseGroup;
+using gdsw::Subdomain;
+
+/* The nz null-space vectors at local node a of s, vector k at out[k*bs + c]. */
+static void NullSpaceAt(const PC_GDSW *gd, const Subdomain &s, PetscInt a, const PetscReal center[], PetscReal out[])
+{
+  const PetscInt bs = gd->bs;
+  std::fill(out, out + gd->nz * bs, 0.0);
+  if (gd->haveCoords) {
+    const PetscReal *x = &s.nodeData[a * bs];
+    for (PetscInt c = 0; c < bs; c++) out[c * bs + c] = 1.0;
+    const PetscReal dx = x[0] - center[0], dy = x[1] - center[1];
+    if (bs == 2) {
+      out[2 * bs + 0] = -dy, out[2 * bs + 1] = dx;
+    } else {
+      const PetscReal dz = x[2] - center[2];
+      out[3 * bs + 0] = -dy, out[3 * bs + 1] = dx;  /* about z */
+      out[4 * bs + 1] = -dz, out[4 * bs + 2] = dy;  /* about x */
+      out[5 * bs + 0] = dz, out[5 * bs + 2] = -dx;  /* about y */
+    }
+  } else if (gd->dataWidth) {
+    std::copy(&s.nodeData[a * gd->dataWidth], &s.nodeData[(a + 1) * gd->dataWidth], out);
+  } else {
+    for (PetscInt c = 0; c < bs; c++) out[c * bs + c] = 1.0;
+  }
+}
+
+/* Number of non-Dirichlet dofs of a group's support (the rows of its values). */
+static PetscInt SupportRows(const PC_GDSW *gd, const Subdomain &s, const CoarseGroup &g)
+{
+  PetscInt m = 0;
+  for (PetscInt a : g.support)
+    for (PetscInt c = 0; c < gd->bs; c++) m += !(s.dirMask[a] >> c & 1);
+  return m;
+}
+
+/* Phi_Gamma of one group: the null space on its support (times the partition-of-unity weight);
+   for GDSW orthonormalised by Gram-Schmidt, keeping the columns independent to 1e-9 of the
+   largest (a straight edge loses one rotation, a vertex all three). */
+static void GroupValues(const PC_GDSW *gd, const Subdomain &s, CoarseGroup &g)
+{
+  const PetscInt bs = gd->bs, nz = gd->nz, m = SupportRows(gd, s, g);
+  std::vector<PetscReal> Z(m * nz), z(nz * bs);
+  for (size_t t = 0, r = 0; t < g.support.size(); t++) {
+    NullSpaceAt(gd, s, g.support[t], g.center, z.data());
+    for (PetscInt c = 0; c < bs; c++) {
+      if (s.dirMask[g.support[t]] >> c & 1) continue;
+      for (PetscInt k = 0; k < nz; k++) Z[k * m + r] = g.weight[t] * z[k * bs + c];
+      r++;
+    }
+  }
+  if (gd->coarseType == PC_GDSW_COARSE_RGDSW) {
+    g.values = Z, g.ncols = nz;
+    return;
+  }
+  PetscReal maxNorm = 0;
+  for (PetscInt k = 0; k < nz; k++) {
+    PetscReal n2 = 0;
+    for (PetscInt r = 0; r < m; r++) n2 += Z[k * m + r] * Z[k * m + r];
+    maxNorm = std::max(maxNorm, std::sqrt(n2));
+  }
+  g.values.clear();
+  g.ncols = 0;
+  for (PetscInt k = 0; k < nz; k++) {
+    PetscReal *v = &Z[k * m];
+    for (int pass = 0; pass < 2; pass++)
+      for (PetscInt j = 0; j < g.ncols; j++) {
+        const PetscReal *q = &g.values[j * m];
+        PetscReal        d = 0;
+        for (PetscInt r = 0; r < m; r++) d += q[r] * v[r];
+        for (PetscInt r = 0; r < m; r++) v[r] -= d * q[r];
+      }
+    PetscReal n2 = 0;
+    for (PetscInt r = 0; r < m; r++) n2 += v[r] * v[r];
+    if (std::sqrt(n2) <= 1e-9 * maxNorm) continue;
+    for (PetscInt r = 0; r < m; r++) g.values.push_back(v[r] / std::sqrt(n2));
+    g.ncols++;
+  }
+}
+
+/* Global numbering: the subdomain of smallest id in a group's sharing set numbers it; the
+   owner of its representative node relays the number to the other subdomains. */
+static PetscErrorCode NumberGroups(PC pc)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+  PetscInt nmine = 0, first, nleaves, nroots;
+  MPI_Comm comm;
+
+  PetscFunctionBegin;
+  PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
+  for (auto &s : *gd->sub)
+    for (auto &g : s.groups)
+      if (g.sharing[0] == s.gid) nmine += g.ncols;
+  PetscCallMPI(MPI_Scan(&nmine, &first, 1, MPIU_INT, MPI_SUM, comm));
+  first -= nmine;
+  PetscCall(PetscSFGetGraph(gd->nodeSF, &nroots, &nleaves, nullptr, nullptr));
+  std::vector<PetscInt> leaf(nleaves, -1), root(nroots, -1);
+  for (auto &s : *gd->sub)
+    for (auto &g : s.groups)
+      if (g.sharing[0] == s.gid) {
+        const PetscInt a = (PetscInt)(std::lower_bound(s.nodes.begin(), s.nodes.end(), g.rep) - s.nodes.begin());
+        leaf[s.leaf0 + a] = first;
+        first += g.ncols;
+      }
+  PetscCall(PetscSFReduceBegin(gd->nodeSF, MPIU_INT, leaf.data(), root.data(), MPI_MAX));
+  PetscCall(PetscSFReduceEnd(gd->nodeSF, MPIU_INT, leaf.data(), root.data(), MPI_MAX));
+  PetscCall(PetscSFBcastBegin(gd->nodeSF, MPIU_INT, root.data(), leaf.data(), MPI_REPLACE));
+  PetscCall(PetscSFBcastEnd(gd->nodeSF, MPIU_INT, root.data(), leaf.data(), MPI_REPLACE));
+  for (auto &s : *gd->sub)
+    for (auto &g : s.groups) {
+      const PetscInt a = (PetscInt)(std::lower_bound(s.nodes.begin(), s.nodes.end(), g.rep) - s.nodes.begin());
+      g.col0 = leaf[s.leaf0 + a];
+      PetscCheck(g.col0 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "PCGDSW: coarse group at node %" PetscInt_FMT " was not numbered", g.rep);
+    }
+  gd->coarseDim = nmine; /* local for now; the layout of Phi's columns */
+  PetscFunctionReturn(0);
+}
+
+/* Interior (I) and interface (Gamma) dofs of Omega~_i, their submatrices and Phi_Gamma. */
+static PetscErrorCode SetUpExtension(PC pc, Subdomain &s)
+{
+  PC_GDSW       *gd = (PC_GDSW *)pc->data;
+  const PetscInt bs = gd->bs, nn = (PetscInt)s.nodes.size();
+  std::vector<PetscInt> I, G, gRow(nn * bs, -1);
+
+  PetscFunctionBegin;
+  for (PetscInt a = 0; a < nn; a++) {
+    const bool onGamma = (*gd->sets)[s.setOf[a]].size() >= 2;
+    for (PetscInt c = 0; c < bs; c++) {
+      if (s.dirMask[a] >> c & 1) continue;
+      if (onGamma) gRow[a * bs + c] = (PetscInt)G.size(), G.push_back(a * bs + c);
+      else I.push_back(a * bs + c);
+    }
+  }
+  PetscInt ncols = 0;
+  for (auto &g : s.groups) ncols += g.ncols;
+  PetscCall(ISCreateGeneral(PETSC_COMM_SELF, (PetscInt)I.size(), I.data(), PETSC_COPY_VALUES, &s.isI));
+  PetscCall(ISCreateGeneral(PETSC_COMM_SELF, (PetscInt)G.size(), G.data(), PETSC_COPY_VALUES, &s.isG));
+  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, (PetscInt)G.size(), ncols, nullptr, &s.PhiG));
+  PetscScalar *phi;
+  PetscCall(MatDenseGetArrayWrite(s.PhiG, &phi));
+  std::fill(phi, phi + G.size() * ncols, 0.0);
+  PetscInt j0 = 0;
+  for (auto &g : s.groups) {
+    const PetscInt m = (PetscInt)g.values.size() / std::max<PetscInt>(g.ncols, 1);
+    for (PetscInt j = 0; j < g.ncols; j++) {
+      PetscInt r = 0;
+      for (PetscInt a : g.support)
+        for (PetscInt c = 0; c < bs; c++)
+          if (!(s.dirMask[a] >> c & 1)) phi[(j0 + j) * G.size() + gRow[a * bs + c]] = g.values[j * m + r++];
+    }
+    j0 += g.ncols;
+  }
+  PetscCall(MatDenseRestoreArrayWrite(s.PhiG, &phi));
+  PetscCall(KSPCreate(PETSC_COMM_SELF, &s.kspII));
+  PetscCall(PetscObjectIncrementTabLevel((PetscObject)s.kspII, (PetscObject)pc, 1));
+  PetscCall(KSPSetOptionsPrefix(s.kspII, ((PetscObject)pc)->prefix));
+  PetscCall(KSPAppendOptionsPrefix(s.kspII, "pc_gdsw_extension_"));
+  PetscCall(GDSWDefaultFactorSolver(s.kspII, nullptr));
+  PetscCall(KSPSetFromOptions(s.kspII));
+  PetscFunctionReturn(0);
+}
+
+/* Phi_I = -A_II^{-1} A_IGamma Phi_Gamma, with the current values of A. */
+static PetscErrorCode Extend(PC pc, Subdomain &s, MatReuse reuse)
+{
+  PetscInt nI, ncols;
+  Mat      B;
+
+  PetscFunctionBegin;
+  PetscCall(ISGetLocalSize(s.isI, &nI));
+  PetscCall(MatGetSize(s.PhiG, nullptr, &ncols));
+  if (!nI || !ncols) PetscFunctionReturn(0);
+  PetscCall(MatCreateSubMatrix(s.Anon, s.isI, s.isI, reuse, &s.AII));
+  PetscCall(MatCreateSubMatrix(s.Anon, s.isI, s.isG, reuse, &s.AIG));
+  PetscCall(MatMatMult(s.AIG, s.PhiG, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &B));
+  PetscCall(MatScale(B, -1.0));
+  if (reuse == MAT_INITIAL_MATRIX) PetscCall(MatDuplicate(B, MAT_DO_NOT_COPY_VALUES, &s.PhiI));
+  PetscCall(KSPSetOperators(s.kspII, s.AII, s.AII));
+  PetscCall(KSPMatSolve(s.kspII, B, s.PhiI));
+  PetscCall(MatDestroy(&B));
+  PetscFunctionReturn(0);
+}
+
+/* Insert every subdomain's rows of Phi: its interior rows, and the interface rows of the nodes
+   whose sharing set it leads, so that each row is set exactly once. */
+static PetscErrorCode InsertPhi(PC pc, Mat P)
+{
+  PC_GDSW       *gd = (PC_GDSW *)pc->data;
+  const PetscInt bs = gd->bs;
+
+  PetscFunctionBegin;
+  for (auto &s : *gd->sub) {
+    std::vector<PetscInt> cols;
+    for (auto &g : s.groups)
+      for (PetscInt j = 0; j < g.ncols; j++) cols.push_back(g.col0 + j);
+    const PetscInt ncols = (PetscInt)cols.size();
+    if (!ncols) continue;
+    PetscInt        nI, nG;
+    const PetscInt *I, *G;
+    PetscCall(ISGetLocalSize(s.isI, &nI));
+    PetscCall(ISGetLocalSize(s.isG, &nG));
+    PetscCall(ISGetIndices(s.isI, &I));
+    PetscCall(ISGetIndices(s.isG, &G));
+    if (nI) {
+      const PetscScalar *x;
+      PetscCall(MatDenseGetArrayRead(s.PhiI, &x));
+      for (PetscInt r = 0; r < nI; r++) {
+        const PetscInt row = s.nodes[I[r] / bs] * bs + I[r] % bs;
+        for (PetscInt j = 0; j < ncols; j++) PetscCall(MatSetValue(P, row, cols[j], x[j * nI + r], INSERT_VALUES));
+      }
+      PetscCall(MatDenseRestoreArrayRead(s.PhiI, &x));
+    }
+    const PetscScalar *y;
+    PetscCall(MatDenseGetArrayRead(s.PhiG, &y));
+    for (PetscInt r = 0; r < nG; r++) {
+      const PetscInt a = G[r] / bs;
+      if ((*gd->sets)[s.setOf[a]][0] != s.gid) continue;
+      const PetscInt row = s.nodes[a] * bs + G[r] % bs;
+      for (PetscInt j = 0; j < ncols; j++)
+        if (y[j * nG + r] != 0.0) PetscCall(MatSetValue(P, row, cols[j], y[j * nG + r], INSERT_VALUES));
+    }
+    PetscCall(MatDenseRestoreArrayRead(s.PhiG, &y));
+    PetscCall(ISRestoreIndices(s.isI, &I));
+    PetscCall(ISRestoreIndices(s.isG, &G));
+  }
+  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+/* Columns that vanish everywhere (e.g. an RGDSW translation whose support is all Dirichlet)
+   would make A_0 singular: drop them. */
+static PetscErrorCode DropZeroColumns(PC pc, MatReuse reuse)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+  PetscInt M, N, cstart, cend, rstart, rend;
+
+  PetscFunctionBegin;
+  if (reuse == MAT_REUSE_MATRIX) {
+    if (gd->keptCols) {
+      IS rows;
+      PetscCall(MatGetOwnershipRange(gd->PhiFull, &rstart, &rend));
+      PetscCall(ISCreateStride(PetscObjectComm((PetscObject)pc), rend - rstart, rstart, 1, &rows));
+      PetscCall(MatCreateSubMatrix(gd->PhiFull, rows, gd->keptCols, MAT_REUSE_MATRIX, &gd->Phi));
+      PetscCall(ISDestroy(&rows));
+    }
+    PetscFunctionReturn(0);
+  }
+  PetscCall(MatGetSize(gd->PhiFull, &M, &N));
+  PetscCall(MatGetOwnershipRangeColumn(gd->PhiFull, &cstart, &cend));
+  std::vector<PetscReal> norms(N);
+  PetscCall(MatGetColumnNorms(gd->PhiFull, NORM_INFINITY, norms.data()));
+  std::vector<PetscInt> kept;
+  for (PetscInt j = cstart; j < cend; j++)
+    if (norms[j] > 0) kept.push_back(j);
+  PetscInt nzero = (cend - cstart) - (PetscInt)kept.size(), gzero;
+  PetscCallMPI(MPIU_Allreduce(&nzero, &gzero, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)pc)));
+  if (!gzero) {
+    PetscCall(PetscObjectReference((PetscObject)gd->PhiFull));
+    gd->Phi = gd->PhiFull;
+    PetscFunctionReturn(0);
+  }
+  PetscCall(PetscInfo(pc, "dropping %" PetscInt_FMT " coarse functions that vanish on every non-Dirichlet dof\n", gzero));
+  IS rows;
+  PetscCall(MatGetOwnershipRange(gd->PhiFull, &rstart, &rend));
+  PetscCall(ISCreateStride(PetscObjectComm((PetscObject)pc), rend - rstart, rstart, 1, &rows));
+  PetscCall(ISCreateGeneral(PetscObjectComm((PetscObject)pc), (PetscInt)kept.size(), kept.data(), PETSC_COPY_VALUES, &gd->keptCols));
+  PetscCall(MatCreateSubMatrix(gd->PhiFull, rows, gd->keptCols, MAT_INITIAL_MATRIX, &gd->Phi));
+  PetscCall(ISDestroy(&rows));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode GDSWBuildCoarseBasis(PC pc)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+  PetscInt m, M, N;
+  Mat      pre;
+  MPI_Comm comm;
+
+  PetscFunctionBegin;
+  PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
+  PetscCall(PetscLogEventBegin(GDSW_Basis, pc, 0, 0, 0));
+  for (auto &s : *gd->sub)
+    for (auto &g : s.groups) GroupValues(gd, s, g);
+  PetscCall(NumberGroups(pc));
+  for (auto &s : *gd->sub) PetscCall(SetUpExtension(pc, s));
+  PetscCall(PetscLogEventEnd(GDSW_Basis, pc, 0, 0, 0));
+
+  PetscCall(PetscLogEventBegin(GDSW_Extension, pc, 0, 0, 0));
+  for (auto &s : *gd->sub) PetscCall(Extend(pc, s, MAT_INITIAL_MATRIX));
+  PetscCall(MatGetLocalSize(gd->A, &m, nullptr));
+  PetscCall(MatGetSize(gd->A, &M, nullptr));
+  PetscCallMPI(MPIU_Allreduce(&gd->coarseDim, &N, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCall(MatCreate(comm, &pre));
+  PetscCall(MatSetType(pre, MATPREALLOCATOR));
+  PetscCall(MatSetSizes(pre, m, gd->coarseDim, M, N));
+  PetscCall(MatSetUp(pre));
+  PetscCall(InsertPhi(pc, pre));
+  PetscCall(MatCreate(comm, &gd->PhiFull));
+  PetscCall(MatSetType(gd->PhiFull, MATAIJ));
+  PetscCall(MatSetSizes(gd->PhiFull, m, gd->coarseDim, M, N));
+  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, gd->PhiFull));
+  PetscCall(MatDestroy(&pre));
+  PetscCall(InsertPhi(pc, gd->PhiFull));
+  PetscCall(DropZeroColumns(pc, MAT_INITIAL_MATRIX));
+  PetscCall(MatGetSize(gd->Phi, nullptr, &gd->coarseDim));
+  PetscCall(PetscLogEventEnd(GDSW_Extension, pc, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* New values of A with the same pattern: refactor the interiors and re-extend. */
+PetscErrorCode GDSWUpdateCoarseBasis(PC pc)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(GDSW_Extension, pc, 0, 0, 0));
+  for (auto &s : *gd->sub) PetscCall(Extend(pc, s, MAT_REUSE_MATRIX));
+  PetscCall(MatZeroEntries(gd->PhiFull));
+  PetscCall(InsertPhi(pc, gd->PhiFull));
+  PetscCall(DropZeroColumns(pc, MAT_REUSE_MATRIX));
+  PetscCall(PetscLogEventEnd(GDSW_Extension, pc, 0, 0, 0));
+  PetscFunctionReturn(0);
+}

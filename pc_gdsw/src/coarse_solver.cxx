@@ -1,0 +1,89 @@
+/* Coarse level: A_0 = Phi^T A Phi, factored by the coarse KSP (default: MUMPS LU on all ranks
+   of the PC, options prefix -pc_gdsw_coarse_). */
+#include "gdswimpl.h"
+
+/* A floating operator (no Dirichlet row) whose null space is not attached would make A_0
+   singular: say so instead of failing inside the factorisation. */
+static PetscErrorCode CheckFloating(PC pc, PetscBool *floating)
+{
+  PC_GDSW     *gd = (PC_GDSW *)pc->data;
+  MatNullSpace nsp;
+  Vec          z, Az;
+  PetscReal    nz, nAz, nA;
+
+  PetscFunctionBegin;
+  *floating = PETSC_FALSE;
+  if (gd->nDirichletRows) PetscFunctionReturn(0);
+  PetscCall(MatCreateVecs(gd->A, &z, &Az));
+  PetscCall(VecStrideSet(z, 0, 1.0));
+  PetscCall(MatMult(gd->A, z, Az));
+  PetscCall(VecNorm(z, NORM_2, &nz));
+  PetscCall(VecNorm(Az, NORM_2, &nAz));
+  PetscCall(MatNorm(gd->A, NORM_INFINITY, &nA));
+  PetscCall(VecDestroy(&z));
+  PetscCall(VecDestroy(&Az));
+  if (nAz > 1e-10 * nA * nz) PetscFunctionReturn(0);
+  PetscCall(MatGetNullSpace(pc->pmat, &nsp));
+  PetscCheck(nsp, PetscObjectComm((PetscObject)pc), PETSC_ERR_MAT_LU_ZRPVT,
+             "PCGDSW: the operator is singular: it has no Dirichlet row and maps the constant vector of component 0 to zero (|A z|/|A||z| = %g), so the coarse matrix A_0 is singular too. Add a Dirichlet condition, or attach the null space with MatSetNullSpace() so that the Krylov method removes it",
+             (double)(nAz / (nA * nz)));
+  *floating = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode GDSWSetUpCoarseSolver(PC pc)
+{
+  PC_GDSW       *gd = (PC_GDSW *)pc->data;
+  PCFailedReason reason;
+  PC             cpc;
+  PetscBool      floating, isMumps;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(GDSW_CoarseSetUp, pc, 0, 0, 0));
+  const MatReuse reuse = gd->A0 ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX;
+  PetscCall(MatPtAP(gd->A, gd->Phi, reuse, 2.0, &gd->A0));
+  if (!gd->coarseKsp) {
+    PetscCall(CheckFloating(pc, &floating));
+    PetscCall(KSPCreate(PetscObjectComm((PetscObject)pc), &gd->coarseKsp));
+    PetscCall(PetscObjectIncrementTabLevel((PetscObject)gd->coarseKsp, (PetscObject)pc, 1));
+    PetscCall(KSPSetOptionsPrefix(gd->coarseKsp, ((PetscObject)pc)->prefix));
+    PetscCall(KSPAppendOptionsPrefix(gd->coarseKsp, "pc_gdsw_coarse_"));
+    PetscCall(GDSWDefaultFactorSolver(gd->coarseKsp, MATSOLVERMUMPS));
+    PetscCall(KSPSetOperators(gd->coarseKsp, gd->A0, gd->A0));
+    PetscCall(KSPSetFromOptions(gd->coarseKsp));
+    PetscCall(KSPGetPC(gd->coarseKsp, &cpc));
+    PetscCall(PetscObjectTypeCompare((PetscObject)cpc, PCLU, &isMumps));
+    if (floating && isMumps) {
+      /* the null space is attached: let MUMPS detect the null pivots of A_0 */
+      MatSolverType st;
+      PetscCall(PCFactorGetMatSolverType(cpc, &st));
+      if (st && !strcmp(st, MATSOLVERMUMPS)) {
+        Mat F;
+        PetscCall(PCFactorSetUpMatSolverType(cpc));
+        PetscCall(PCFactorGetMatrix(cpc, &F));
+        PetscCall(MatMumpsSetIcntl(F, 24, 1));
+        PetscCall(PetscInfo(pc, "floating operator with attached null space: MUMPS null-pivot detection on A_0\n"));
+      }
+    }
+    PetscCall(MatCreateVecs(gd->A0, &gd->x0, &gd->r0));
+  } else PetscCall(KSPSetOperators(gd->coarseKsp, gd->A0, gd->A0));
+  PetscCall(KSPSetUp(gd->coarseKsp));
+  PetscCall(KSPGetPC(gd->coarseKsp, &cpc));
+  PetscCall(PCGetFailedReason(cpc, &reason));
+  PetscCheck(reason == PC_NOERROR, PetscObjectComm((PetscObject)pc), PETSC_ERR_MAT_LU_ZRPVT,
+             "PCGDSW: the coarse matrix A_0 = Phi^T A Phi (dimension %" PetscInt_FMT ") could not be factored (%s): A is singular on the coarse space; check the Dirichlet conditions and the near-null space",
+             gd->coarseDim, PCFailedReasons[reason]);
+  PetscCall(PetscLogEventEnd(GDSW_CoarseSetUp, pc, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode GDSWApplyCoarse(PC pc, Vec x, Vec y)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  PetscCall(MatMultTranspose(gd->Phi, x, gd->r0));
+  PetscCall(KSPSolve(gd->coarseKsp, gd->r0, gd->x0));
+  PetscCall(MatMultAdd(gd->Phi, gd->x0, y, y));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,288 @@
+/* Decomposition: the nonoverlapping subdomains Omega~_i (which share their interface nodes,
+   as the closures of element sets do) and the overlapping subdomains Omega_i^delta.
+   Sources, in order of preference: the caller's element-based sets (PCGDSWSetSubdomains), a
+   MATIS operator's local-to-global map, or METIS on each rank's node graph. */
+#include "gdswimpl.h"
+#include <petscmat.h>
+#include <metis.h>
+#include <algorithm>
+
+using gdsw::Subdomain;
+
+/* Sorted unique node ids of a dof index set; errors if it does not hold whole nodes. */
+static PetscErrorCode NodesOfIS(IS is, PetscInt bs, PetscInt which, std::vector<PetscInt> &nodes)
+{
+  PetscInt        n;
+  const PetscInt *idx;
+
+  PetscFunctionBegin;
+  PetscCall(ISGetLocalSize(is, &n));
+  PetscCall(ISGetIndices(is, &idx));
+  std::vector<PetscInt> dofs(idx, idx + n);
+  PetscCall(ISRestoreIndices(is, &idx));
+  std::sort(dofs.begin(), dofs.end());
+  dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+  nodes.clear();
+  for (PetscInt d : dofs)
+    if (nodes.empty() || nodes.back() != d / bs) nodes.push_back(d / bs);
+  PetscCheck((PetscInt)dofs.size() == (PetscInt)nodes.size() * bs, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+             "PCGDSW: subdomain %" PetscInt_FMT " index set holds %zu dofs on %zu nodes: with block size %" PetscInt_FMT " it must contain every dof of each node it touches",
+             which, dofs.size(), nodes.size(), bs);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode DofISOfNodes(const std::vector<PetscInt> &nodes, PetscInt bs, IS *is)
+{
+  PetscFunctionBegin;
+  PetscCall(ISCreateBlock(PETSC_COMM_SELF, bs, (PetscInt)nodes.size(), nodes.data(), PETSC_COPY_VALUES, is));
+  PetscFunctionReturn(0);
+}
+
+/* Node graph of the rows this rank owns: adjacency to owned nodes (local ids) and to ghost
+   nodes (global ids), from the diagonal and off-diagonal blocks of the (MPI)AIJ operator. */
+struct LocalGraph {
+  std::vector<PetscInt> xadj, adj;           /* owned-owned, local node ids, no self loops */
+  std::vector<PetscInt> gxadj, gadj;         /* owned-ghost, global node ids */
+};
+
+static PetscErrorCode BuildLocalGraph(Mat A, PetscInt bs, LocalGraph &g)
+{
+  Mat             Ad, Ao = nullptr;
+  const PetscInt *garray = nullptr, *ia, *ja;
+  PetscInt        nrows, rstart, rend;
+  PetscBool       isMPI, done;
+
+  PetscFunctionBegin;
+  PetscCall(PetscObjectTypeCompare((PetscObject)A, MATMPIAIJ, &isMPI));
+  if (isMPI) PetscCall(MatMPIAIJGetSeqAIJ(A, &Ad, &Ao, &garray));
+  else Ad = A;
+  PetscCall(MatGetOwnershipRange(A, &rstart, &rend));
+  const PetscInt nn = (rend - rstart) / bs;
+  std::vector<std::vector<PetscInt>> own(nn), ghost(nn);
+  PetscCall(MatGetRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
+  PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_SUP, "PCGDSW: cannot access the rows of the local matrix");
+  for (PetscInt r = 0; r < nrows; r++)
+    for (PetscInt k = ia[r]; k < ia[r + 1]; k++)
+      if (ja[k] / bs != r / bs) own[r / bs].push_back(ja[k] / bs);
+  PetscCall(MatRestoreRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
+  if (Ao) {
+    PetscCall(MatGetRowIJ(Ao, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
+    for (PetscInt r = 0; r < nrows; r++)
+      for (PetscInt k = ia[r]; k < ia[r + 1]; k++) ghost[r / bs].push_back(garray[ja[k]] / bs);
+    PetscCall(MatRestoreRowIJ(Ao, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
+  }
+  /* METIS needs a symmetric graph: add reverse edges */
+  for (PetscInt a = 0; a < nn; a++)
+    for (PetscInt b : std::vector<PetscInt>(own[a])) own[b].push_back(a);
+  auto flatten = [](std::vector<std::vector<PetscInt>> &lists, std::vector<PetscInt> &x, std::vector<PetscInt> &y) {
+    x.assign(1, 0);
+    y.clear();
+    for (auto &l : lists) {
+      std::sort(l.begin(), l.end());
+      l.erase(std::unique(l.begin(), l.end()), l.end());
+      y.insert(y.end(), l.begin(), l.end());
+      x.push_back((PetscInt)y.size());
+    }
+  };
+  flatten(own, g.xadj, g.adj);
+  flatten(ghost, g.gxadj, g.gadj);
+  PetscFunctionReturn(0);
+}
+
+/* Split the owned nodes into nparts with METIS (k-way); returns the part of each node. */
+static PetscErrorCode PartitionNodes(const LocalGraph &g, PetscInt nparts, std::vector<PetscInt> &part)
+{
+  const PetscInt nn = (PetscInt)g.xadj.size() - 1;
+
+  PetscFunctionBegin;
+  part.assign(nn, 0);
+  if (nparts <= 1 || nn == 0) PetscFunctionReturn(0);
+  if (nparts >= nn) { /* one node per part: METIS would refuse */
+    for (PetscInt a = 0; a < nn; a++) part[a] = a;
+    PetscFunctionReturn(0);
+  }
+  std::vector<idx_t> xadj(g.xadj.begin(), g.xadj.end()), adj(g.adj.begin(), g.adj.end()), p(nn);
+  idx_t nv = (idx_t)nn, ncon = 1, np = (idx_t)nparts, cut, options[METIS_NOPTIONS];
+  METIS_SetDefaultOptions(options);
+  options[METIS_OPTION_SEED]    = 7; /* reproducible decompositions */
+  options[METIS_OPTION_CONTIG]  = 1; /* connected subdomains when the graph allows */
+  int status = METIS_PartGraphKway(&nv, &ncon, xadj.data(), adj.data(), nullptr, nullptr, nullptr, &np, nullptr, nullptr, options, &cut, p.data());
+  if (status != METIS_OK) { /* CONTIG fails on disconnected graphs: retry without it */
+    options[METIS_OPTION_CONTIG] = 0;
+    status = METIS_PartGraphKway(&nv, &ncon, xadj.data(), adj.data(), nullptr, nullptr, nullptr, &np, nullptr, nullptr, options, &cut, p.data());
+  }
+  PetscCheck(status == METIS_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "PCGDSW: METIS_PartGraphKway failed (status %d) splitting %" PetscInt_FMT " nodes into %" PetscInt_FMT " subdomains", status, nn, nparts);
+  for (PetscInt a = 0; a < nn; a++) part[a] = p[a];
+  PetscFunctionReturn(0);
+}
+
+/* Algebraic subdomains: parts P_i of the owned nodes, and Omega~_i = P_i plus the neighbours
+   that belong to subdomains of larger id. The interface is then one layer of nodes, shared by
+   a subdomain and its lower-numbered neighbours, as with element-based subdomains. */
+static PetscErrorCode AlgebraicSubdomains(PC pc, std::vector<std::vector<PetscInt>> &parts)
+{
+  PC_GDSW   *gd = (PC_GDSW *)pc->data;
+  Mat        A  = gd->A;
+  const PetscInt bs = gd->bs;
+  LocalGraph g;
+  std::vector<PetscInt> part;
+  PetscInt   rstart, rend, first;
+  MPI_Comm   comm;
+
+  PetscFunctionBegin;
+  PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
+  PetscCall(MatGetOwnershipRange(A, &rstart, &rend));
+  PetscCall(BuildLocalGraph(A, bs, g));
+  PetscCall(PartitionNodes(g, gd->nsubPerRank, part));
+  const PetscInt nn = (rend - rstart) / bs, n0 = rstart / bs;
+
+  /* drop empty parts, then number the rest globally */
+  std::vector<PetscInt> renum(std::max<PetscInt>(gd->nsubPerRank, nn) + 1, -1);
+  PetscInt nparts = 0;
+  for (PetscInt a = 0; a < nn; a++)
+    if (renum[part[a]] < 0) renum[part[a]] = nparts++;
+  for (PetscInt a = 0; a < nn; a++) part[a] = renum[part[a]];
+  if (nparts < gd->nsubPerRank) PetscCall(PetscInfo(pc, "%" PetscInt_FMT " of %" PetscInt_FMT " requested subdomains on this rank are empty and dropped\n", gd->nsubPerRank - nparts, gd->nsubPerRank));
+  PetscCallMPI(MPI_Scan(&nparts, &first, 1, MPIU_INT, MPI_SUM, comm));
+  first -= nparts;
+
+  /* subdomain id of every owned dof, and of the ghost neighbours */
+  Vec      sid, ghostSid;
+  IS       ghostIS;
+  VecScatter sc;
+  PetscCall(MatCreateVecs(A, &sid, nullptr));
+  {
+    PetscScalar *s;
+    PetscCall(VecGetArray(sid, &s));
+    for (PetscInt a = 0; a < nn; a++)
+      for (PetscInt c = 0; c < bs; c++) s[a * bs + c] = (PetscScalar)(first + part[a]);
+    PetscCall(VecRestoreArray(sid, &s));
+  }
+  std::vector<PetscInt> ghostNodes(g.gadj);
+  std::sort(ghostNodes.begin(), ghostNodes.end());
+  ghostNodes.erase(std::unique(ghostNodes.begin(), ghostNodes.end()), ghostNodes.end());
+  std::vector<PetscInt> ghostDofs;
+  for (PetscInt m : ghostNodes) ghostDofs.push_back(m * bs);
+  PetscCall(ISCreateGeneral(PETSC_COMM_SELF, (PetscInt)ghostDofs.size(), ghostDofs.data(), PETSC_USE_POINTER, &ghostIS));
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, (PetscInt)ghostDofs.size(), &ghostSid));
+  PetscCall(VecScatterCreate(sid, ghostIS, ghostSid, nullptr, &sc));
+  PetscCall(VecScatterBegin(sc, sid, ghostSid, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(sc, sid, ghostSid, INSERT_VALUES, SCATTER_FORWARD));
+  const PetscScalar *gs;
+  PetscCall(VecGetArrayRead(ghostSid, &gs));
+
+  parts.assign(nparts, {});
+  std::vector<std::vector<PetscInt>> omega(nparts);
+  for (PetscInt a = 0; a < nn; a++) {
+    const PetscInt i = part[a];
+    parts[i].push_back(n0 + a);
+    omega[i].push_back(n0 + a);
+    for (PetscInt k = g.xadj[a]; k < g.xadj[a + 1]; k++)
+      if (part[g.adj[k]] > i) omega[i].push_back(n0 + g.adj[k]);
+    for (PetscInt k = g.gxadj[a]; k < g.gxadj[a + 1]; k++) {
+      const PetscInt m = g.gadj[k];
+      const PetscInt s = (PetscInt)PetscRealPart(gs[std::lower_bound(ghostNodes.begin(), ghostNodes.end(), m) - ghostNodes.begin()]);
+      if (s > first + i) omega[i].push_back(m);
+    }
+  }
+  PetscCall(VecRestoreArrayRead(ghostSid, &gs));
+  PetscCall(VecScatterDestroy(&sc));
+  PetscCall(VecDestroy(&ghostSid));
+  PetscCall(ISDestroy(&ghostIS));
+  PetscCall(VecDestroy(&sid));
+
+  gd->sub->assign(nparts, Subdomain());
+  for (PetscInt i = 0; i < nparts; i++) {
+    auto &o = omega[i];
+    std::sort(o.begin(), o.end());
+    o.erase(std::unique(o.begin(), o.end()), o.end());
+    (*gd->sub)[i].gid   = first + i;
+    (*gd->sub)[i].nodes = o;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Element-based subdomains from the caller or a MATIS local-to-global map. */
+static PetscErrorCode GivenSubdomains(PC pc, PetscInt n, IS non[], std::vector<PetscInt> &origin)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+  std::vector<std::vector<PetscInt>> nodes;
+  PetscInt first;
+
+  PetscFunctionBegin;
+  for (PetscInt i = 0; i < n; i++) {
+    std::vector<PetscInt> nd;
+    PetscCall(NodesOfIS(non[i], gd->bs, i, nd));
+    if (nd.empty()) PetscCall(PetscInfo(pc, "subdomain %" PetscInt_FMT " on this rank is empty and dropped\n", i));
+    else nodes.push_back(nd), origin.push_back(i);
+  }
+  const PetscInt nk = (PetscInt)nodes.size();
+  PetscCallMPI(MPI_Scan(&nk, &first, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)pc)));
+  first -= nk;
+  gd->sub->assign(nk, Subdomain());
+  for (PetscInt i = 0; i < nk; i++) {
+    (*gd->sub)[i].gid   = first + i;
+    (*gd->sub)[i].nodes = nodes[i];
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode GDSWBuildDecomposition(PC pc)
+{
+  PC_GDSW  *gd = (PC_GDSW *)pc->data;
+  PetscBool isIS;
+  std::vector<std::vector<PetscInt>> parts; /* algebraic: the disjoint P_i, base of the overlap */
+  std::vector<PetscInt> origin;             /* given: index of each kept subdomain in the input */
+  MPI_Comm  comm;
+
+  PetscFunctionBegin;
+  PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc->pmat, MATIS, &isIS));
+  const PetscBool haveUser = (PetscBool)(gd->nUser >= 0);
+  if (haveUser) {
+    PetscCall(GivenSubdomains(pc, gd->nUser, gd->userNon, origin));
+  } else if (isIS) {
+    ISLocalToGlobalMapping l2g;
+    PetscInt               n;
+    const PetscInt        *idx;
+    IS                     is;
+    PetscCheck(gd->nsubPerRank == 1, comm, PETSC_ERR_SUP, "PCGDSW: -pc_gdsw_subdomains %" PetscInt_FMT " is not available for a MATIS operator, whose local-to-global map defines one subdomain per rank; use 1 or an AIJ operator", gd->nsubPerRank);
+    PetscCall(MatISGetLocalToGlobalMapping(pc->pmat, &l2g, nullptr));
+    PetscCall(ISLocalToGlobalMappingGetSize(l2g, &n));
+    PetscCall(ISLocalToGlobalMappingGetIndices(l2g, &idx));
+    PetscCall(ISCreateGeneral(PETSC_COMM_SELF, n, idx, PETSC_COPY_VALUES, &is));
+    PetscCall(ISLocalToGlobalMappingRestoreIndices(l2g, &idx));
+    PetscCall(GivenSubdomains(pc, 1, &is, origin));
+    PetscCall(ISDestroy(&is));
+  } else {
+    PetscCall(AlgebraicSubdomains(pc, parts));
+  }
+  PetscInt nloc = (PetscInt)gd->sub->size();
+  PetscCallMPI(MPIU_Allreduce(&nloc, &gd->nGlobalSubdomains, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCheck(gd->nGlobalSubdomains > 0, comm, PETSC_ERR_ARG_WRONG, "PCGDSW: the decomposition has no nonempty subdomain");
+
+  /* overlapping subdomains: the caller's, or graph layers around P_i (algebraic) or Omega~_i */
+  std::vector<IS> ovl(nloc);
+  for (PetscInt i = 0; i < nloc; i++) {
+    gdsw::Subdomain &s = (*gd->sub)[i];
+    PetscCall(DofISOfNodes(s.nodes, gd->bs, &s.nonoverlap));
+    if (haveUser && gd->userOvl) PetscCall(ISDuplicate(gd->userOvl[origin[i]], &ovl[i]));
+    else if (!parts.empty()) PetscCall(DofISOfNodes(parts[i], gd->bs, &ovl[i]));
+    else PetscCall(ISDuplicate(s.nonoverlap, &ovl[i]));
+  }
+  const PetscBool layers = (PetscBool)!(haveUser && gd->userOvl);
+  if (layers && gd->overlap > 0) PetscCall(MatIncreaseOverlap(gd->A, nloc, ovl.data(), gd->overlap));
+  for (PetscInt i = 0; i < nloc; i++) {
+    gdsw::Subdomain &s = (*gd->sub)[i];
+    std::vector<PetscInt> nd;
+    PetscCall(NodesOfIS(ovl[i], 1, i, nd)); /* dof ids, sorted */
+    std::vector<PetscInt> nodes;
+    for (PetscInt d : nd)
+      if (nodes.empty() || nodes.back() != d / gd->bs) nodes.push_back(d / gd->bs);
+    std::vector<PetscInt> merged;
+    std::set_union(nodes.begin(), nodes.end(), s.nodes.begin(), s.nodes.end(), std::back_inserter(merged));
+    PetscCall(DofISOfNodes(merged, gd->bs, &s.overlap));
+    PetscCall(ISDestroy(&ovl[i]));
+  }
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,111 @@
+/* Private data of PCGDSW. The setup is a pipeline of modules, each in its own file:
+     decomposition.cxx  nonoverlapping subdomains Omega~_i and overlapping Omega_i^delta
+     interface.cxx      sharing sets, Dirichlet dofs, interface components, coarse numbering
+     coarse_basis.cxx   Phi_Gamma per component, harmonic extension Phi_I, global Phi
+     coarse_solver.cxx  A_0 = Phi^T A Phi and its solver
+     first_level.cxx    local solvers on Omega_i^delta and their restriction/prolongation
+     gdsw.cxx           the PC object: options, setup order, apply, view */
+#pragma once
+
+#include <petscgdsw.h>
+#include <petsc/private/pcimpl.h>
+#include <petscsf.h>
+#include <vector>
+
+namespace gdsw {
+
+enum ComponentKind { FACE = 0, EDGE = 1, VERTEX = 2 };
+
+/* A group of coarse basis functions, seen from one subdomain. For GDSW it is one interface
+   component; for RGDSW one coarse node whose support is every component it is an ancestor of. */
+struct CoarseGroup {
+  PetscInt              rep;       /* global node id representing it (smallest node of its component) */
+  std::vector<PetscInt> sharing;   /* sorted global ids of the subdomains sharing the component */
+  ComponentKind         kind;
+  PetscInt              ncols;     /* number of coarse functions */
+  PetscInt              col0;      /* global index of the first one (-1 until numbered) */
+  std::vector<PetscInt> support;   /* local node indices (into Subdomain::nodes) of its support */
+  std::vector<PetscReal> weight;   /* partition-of-unity weight per support node (GDSW: 1) */
+  std::vector<PetscReal> values;   /* Phi_Gamma on the support's non-Dirichlet dofs, column-major */
+  PetscReal             center[3]; /* centroid of the component: origin of its rotations */
+};
+
+struct Subdomain {
+  PetscInt gid = -1;                    /* global subdomain id */
+  PetscInt leaf0 = 0;                   /* first leaf of its nodes in PC_GDSW::nodeSF */
+  std::vector<PetscInt> nodes;          /* Omega~_i: sorted global node ids */
+  IS  nonoverlap = nullptr;             /* Omega~_i as global dofs */
+  IS  overlap = nullptr;                /* Omega_i^delta as global dofs */
+  /* interface view, filled by the interface module */
+  std::vector<PetscInt> setOf;          /* per node: index into PC_GDSW::sets */
+  std::vector<PetscInt> dirMask;        /* per node: bit c set if dof c is a Dirichlet dof */
+  std::vector<PetscReal> nodeData;      /* per node: coordinates (dim) or null-space rows (nz*bs) */
+  std::vector<CoarseGroup> groups;
+  /* harmonic extension */
+  Mat Anon = nullptr;                   /* A(Omega~_i, Omega~_i), owned by PC_GDSW::AnonArr */
+  KSP kspII = nullptr;                  /* interior solver */
+  Mat AII = nullptr, AIG = nullptr;
+  IS  isI = nullptr, isG = nullptr;     /* local dofs of Omega~_i: interior / interface */
+  Mat PhiG = nullptr, PhiI = nullptr;   /* dense: interface values, harmonic extension */
+  /* first level */
+  Mat Aovl = nullptr;                   /* A(Omega_i^delta, Omega_i^delta), owned by PC_GDSW::AovlArr */
+  KSP ksp = nullptr;
+  Vec x = nullptr, y = nullptr;         /* views into the work vectors (arrays placed in apply) */
+  PetscInt wOffset = 0, wSize = 0;      /* slice of the concatenated work vector */
+};
+
+} // namespace gdsw
+
+typedef struct {
+  /* options */
+  PetscInt              nsubPerRank;      /* -pc_gdsw_subdomains */
+  PetscInt              overlap;          /* -pc_gdsw_overlap */
+  PCGDSWCoarseSpaceType coarseType;
+  PCGDSWCombinationType combination;
+  PCGDSWFirstLevelType  firstLevel;
+  PetscBool             rotations;
+  PetscBool             reuseCoarseBasis;
+  /* input */
+  PetscInt  nUser;                        /* user subdomains (PCGDSWSetSubdomains), -1 if none */
+  IS       *userNon, *userOvl;
+  PetscInt  coordDim, nCoordNodes;        /* PCSetCoordinates */
+  PetscReal *coords;
+  /* derived */
+  Mat       A;                            /* the operator as (MPI)AIJ */
+  PetscInt  bs;                           /* dofs per node */
+  PetscInt  nz;                           /* null-space vectors per node */
+  PetscBool haveCoords;                   /* nodeData holds coordinates (rigid modes built here) */
+  PetscInt  dataWidth;                    /* reals per node in nodeData */
+  std::vector<gdsw::Subdomain> *sub;
+  std::vector<std::vector<PetscInt>> *sets; /* distinct sharing sets seen on this rank */
+  PetscInt  nGlobalSubdomains;
+  PetscSF   nodeSF;                       /* leaves: nodes of every local Omega~_i; roots: owned nodes */
+  PetscInt  nDirichletRows;               /* global count */
+  PetscInt  counts[3];                    /* faces, edges, vertices (global) */
+  Mat      *AnonArr, *AovlArr;           /* subdomain matrices, as MatCreateSubMatrices() made them */
+  /* coarse level */
+  Mat Phi, A0;
+  Mat PhiFull;                            /* Phi before dropping zero columns (== Phi if none) */
+  IS  keptCols;
+  KSP coarseKsp;
+  Vec r0, x0;
+  PetscInt coarseDim;
+  /* first level */
+  Vec        work, workOut;               /* concatenated subdomain vectors */
+  VecScatter restrictTo, prolongFrom;     /* global -> work, work(subset) -> global */
+  Vec        tmp1, tmp2;                  /* global-size work for the multiplicative variant */
+} PC_GDSW;
+
+/* module entry points */
+PETSC_INTERN PetscErrorCode GDSWBuildDecomposition(PC);
+PETSC_INTERN PetscErrorCode GDSWBuildInterface(PC);
+PETSC_INTERN PetscErrorCode GDSWBuildCoarseBasis(PC);
+PETSC_INTERN PetscErrorCode GDSWUpdateCoarseBasis(PC);
+PETSC_INTERN PetscErrorCode GDSWSetUpCoarseSolver(PC);
+PETSC_INTERN PetscErrorCode GDSWSetUpFirstLevel(PC, MatReuse);
+PETSC_INTERN PetscErrorCode GDSWApplyFirstLevel(PC, Vec, Vec);
+PETSC_INTERN PetscErrorCode GDSWApplyCoarse(PC, Vec, Vec);
+PETSC_INTERN PetscErrorCode GDSWDefaultFactorSolver(KSP, MatSolverType);
+
+PETSC_INTERN PetscLogEvent GDSW_Decomposition, GDSW_Interface, GDSW_Basis, GDSW_Extension,
+  GDSW_CoarseSetUp, GDSW_LocalFactor, GDSW_Apply;
