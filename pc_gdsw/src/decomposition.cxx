@@ -271,7 +271,13 @@ PetscErrorCode GDSWBuildDecomposition(PC pc)
     else PetscCall(ISDuplicate(s.nonoverlap, &ovl[i]));
   }
   const PetscBool layers = (PetscBool)!(haveUser && gd->userOvl);
-  if (layers && gd->overlap > 0) PetscCall(MatIncreaseOverlap(gd->A, nloc, ovl.data(), gd->overlap));
+  if (layers && gd->overlap > 0) {
+    /* MatIncreaseOverlap() is collective but returns early on ranks with no index set */
+    IS dummy = nullptr;
+    if (!nloc) PetscCall(ISCreateGeneral(PETSC_COMM_SELF, 0, nullptr, PETSC_COPY_VALUES, &dummy));
+    PetscCall(MatIncreaseOverlap(gd->A, nloc ? nloc : 1, nloc ? ovl.data() : &dummy, gd->overlap));
+    PetscCall(ISDestroy(&dummy));
+  }
   for (PetscInt i = 0; i < nloc; i++) {
     gdsw::Subdomain &s = (*gd->sub)[i];
     std::vector<PetscInt> nd;

@@ -137,7 +137,10 @@ static PetscErrorCode GetAIJOperator(PC pc, MatReuse reuse)
   (void)isIS;
   /* dofs per node: the matrix block size, or what PCSetCoordinates implies */
   PetscCall(MatGetBlockSize(P, &bs));
-  if (bs == 1 && gd->coords && gd->nCoordNodes > 0 && m % gd->nCoordNodes == 0) bs = m / gd->nCoordNodes;
+  if (bs == 1 && gd->coords && gd->nCoordNodes > 0) {
+    PetscCheck(m % gd->nCoordNodes == 0, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP, "PCGDSW: PCSetCoordinates() gave %" PetscInt_FMT " local nodes, which does not divide the %" PetscInt_FMT " local rows of the operator into whole nodes", gd->nCoordNodes, m);
+    bs = m / gd->nCoordNodes;
+  }
   PetscCheck(bs >= 1 && bs <= 8 * (PetscInt)sizeof(PetscInt) - 2, comm, PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: block size %" PetscInt_FMT " is not supported", bs);
   PetscCheck(m % bs == 0, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP, "PCGDSW: the block size %" PetscInt_FMT " (dofs per node) does not divide the local size %" PetscInt_FMT " of the operator", bs, m);
   gd->bs = bs;
@@ -159,15 +162,18 @@ static PetscErrorCode PCSetUp_GDSW(PC pc)
     PetscCall(PetscLogEventBegin(GDSW_Interface, pc, 0, 0, 0));
     PetscCall(GDSWBuildInterface(pc));
     PetscCall(PetscLogEventEnd(GDSW_Interface, pc, 0, 0, 0));
+    gd->coarseActive = PETSC_FALSE;
     if (gd->coarseType != PC_GDSW_COARSE_NONE) {
       PetscCall(GDSWBuildCoarseBasis(pc));
-      PetscCall(GDSWSetUpCoarseSolver(pc));
+      gd->coarseActive = (PetscBool)(gd->coarseDim > 0);
+      if (gd->coarseActive) PetscCall(GDSWSetUpCoarseSolver(pc));
+      else PetscCall(PetscInfo(pc, "the decomposition has no interface: no coarse level\n"));
     }
     PetscCall(GDSWSetUpFirstLevel(pc, MAT_INITIAL_MATRIX));
   } else {
     /* same pattern, new values (Newton, time stepping): numeric refactorisations only */
     PetscCall(GetAIJOperator(pc, MAT_REUSE_MATRIX));
-    if (gd->coarseType != PC_GDSW_COARSE_NONE) {
+    if (gd->coarseActive) {
       if (!gd->reuseCoarseBasis) {
         std::vector<IS> non;
         for (auto &s : *gd->sub) non.push_back(s.nonoverlap);
@@ -188,7 +194,7 @@ static PetscErrorCode PCApply_GDSW(PC pc, Vec x, Vec y)
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(GDSW_Apply, pc, x, y, 0));
   PetscCall(VecSet(y, 0.0));
-  const PetscBool coarse = (PetscBool)(gd->coarseType != PC_GDSW_COARSE_NONE);
+  const PetscBool coarse = gd->coarseActive;
   if (coarse && gd->combination == PC_GDSW_MULTIPLICATIVE) {
     /* y = Q0 x + M1 (x - A Q0 x) */
     if (!gd->tmp1) {
@@ -251,7 +257,8 @@ static PetscErrorCode PCView_GDSW(PC pc, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPrintf(viewer, "  %" PetscInt_FMT " subdomains (%s), overlap %s, %" PetscInt_FMT " dofs per node, %" PetscInt_FMT " null-space vectors%s\n", gd->nGlobalSubdomains, source,
                                    gd->nUser >= 0 && gd->userOvl ? "given by the application" : (std::to_string(gd->overlap) + " graph layers").c_str(), gd->bs, gd->nz, gd->haveCoords ? " (rigid modes from coordinates)" : ""));
   PetscCall(PetscViewerASCIIPrintf(viewer, "  interface components: %" PetscInt_FMT " faces, %" PetscInt_FMT " edges, %" PetscInt_FMT " vertices; %" PetscInt_FMT " Dirichlet dofs excluded\n", gd->counts[0], gd->counts[1], gd->counts[2], gd->nDirichletRows));
-  if (gd->coarseType != PC_GDSW_COARSE_NONE) {
+  if (gd->coarseType != PC_GDSW_COARSE_NONE && !gd->coarseActive) PetscCall(PetscViewerASCIIPrintf(viewer, "  no interface, hence no coarse level\n"));
+  if (gd->coarseActive) {
     PetscCall(PetscViewerASCIIPrintf(viewer, "  coarse dimension %" PetscInt_FMT "%s\n", gd->coarseDim, gd->reuseCoarseBasis ? " (basis reused across setups)" : ""));
     PetscCall(PetscViewerASCIIPrintf(viewer, "  coarse solver (prefix -%spc_gdsw_coarse_):\n", ((PetscObject)pc)->prefix ? ((PetscObject)pc)->prefix : ""));
     PetscCall(PetscViewerASCIIPushTab(viewer));

@@ -90,6 +90,7 @@ typedef struct {
   KSP coarseKsp;
   Vec r0, x0;
   PetscInt coarseDim;
+  PetscBool coarseActive;                 /* a coarse level exists (type not none, dimension > 0) */
   /* first level */
   Vec        work, workOut;               /* concatenated subdomain vectors */
   VecScatter restrictTo, prolongFrom;     /* global -> work, work(subset) -> global */

@@ -204,7 +204,12 @@ PetscErrorCode GDSWBuildInterface(PC pc)
   PetscInt        ndeg = 0, maxdeg = 0, gmaxdeg;
   PetscCall(PetscSFComputeDegreeBegin(gd->nodeSF, &degree));
   PetscCall(PetscSFComputeDegreeEnd(gd->nodeSF, &degree));
-  for (PetscInt a = 0; a < nn; a++) ndeg += degree[a], maxdeg = std::max(maxdeg, degree[a]);
+  PetscInt uncovered = -1;
+  for (PetscInt a = 0; a < nn; a++) {
+    ndeg += degree[a], maxdeg = std::max(maxdeg, degree[a]);
+    if (!degree[a] && uncovered < 0) uncovered = rstart / bs + a;
+  }
+  PetscCheck(uncovered < 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "PCGDSW: node %" PetscInt_FMT " (dofs %" PetscInt_FMT "..%" PetscInt_FMT ") lies in no subdomain: the nonoverlapping subdomains must cover every dof", uncovered, uncovered * bs, uncovered * bs + bs - 1);
   std::vector<PetscInt> multi(ndeg);
   PetscCall(PetscSFGatherBegin(gd->nodeSF, MPIU_INT, leafGid.data(), multi.data()));
   PetscCall(PetscSFGatherEnd(gd->nodeSF, MPIU_INT, leafGid.data(), multi.data()));

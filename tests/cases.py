@@ -1,0 +1,260 @@
+#!/usr/bin/env python3
+"""ctest cases for pc_gdsw. Each case runs programs and asserts numbers or messages from their
+output. `cases.py --list` names the cases; `cases.py NAME` runs one (exit status 0 = pass)."""
+import os
+import re
+import subprocess
+import sys
+
+BUILD = os.environ.get("GDSW_BUILD", os.path.join(os.path.dirname(__file__), "..", "build"))
+LIB = os.path.join(BUILD, "pc_gdsw", "libpetscgdsw.so")
+ELASTICITY = os.path.join(BUILD, "pc_gdsw", "gdsw_elasticity")
+BAD_INPUT = os.path.join(BUILD, "tests", "gdsw_bad_input")
+EX56 = os.path.join(BUILD, "tests", "petsc_ksp_ksp_ex56")
+EX71 = os.path.join(BUILD, "tests", "petsc_ksp_ksp_ex71")
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_mpi_yield_when_idle="1")
+CASES = {}
+
+
+def case(f):
+    CASES[f.__name__] = f
+    return f
+
+
+def run(cmd, np=1, fail=False):
+    """Run cmd on np ranks; return its output. fail=True expects a nonzero exit status."""
+    full = ["mpiexec", "-n", str(np)] + [str(c) for c in cmd]
+    p = subprocess.run(full, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=500)
+    print("$", " ".join(full), "\n" + p.stdout[-3000:])
+    assert (p.returncode != 0) == fail, f"exit status {p.returncode}, expected {'failure' if fail else 'success'}"
+    return p.stdout
+
+
+def elasticity(*opts, np=1):
+    """The summary line(s) of the Q1 elasticity driver as dicts of numbers."""
+    out = run([ELASTICITY] + list(opts), np)
+    rows = []
+    for line in out.splitlines():
+        if line.startswith("dofs "):
+            w = line.split()
+            d = {w[i]: w[i + 1] for i in range(0, len(w) - 1, 2)}
+            for k in ("dofs", "iterations", "coarse", "faces", "edges", "vertices"):
+                d[k] = int(d[k])
+            rows.append(d)
+    assert rows, "no summary line"
+    for r in rows:
+        assert r["reason"].startswith("CONVERGED"), f"did not converge: {r['reason']}"
+    return rows[-1] if len(rows) == 1 else rows
+
+
+def between(value, lo, hi, what):
+    print(f"{what}: {value} (expected {lo}..{hi})")
+    assert lo <= value <= hi, f"{what} = {value} is outside [{lo}, {hi}]"
+
+
+# ---- coarse space: exact dimensions and components ------------------------------------------
+BOXES = {2: (105, 12, 6, 1), 3: (528, 54, 36, 8), 4: (1485, 144, 108, 27)}
+
+
+def coarse_dimensions(b):
+    its = []
+    for np in (1, 2):
+        r = elasticity("-n", 4 * b, "-boxes", b, np=np)
+        dim, f, e, v = BOXES[b]
+        assert (r["coarse"], r["faces"], r["edges"], r["vertices"]) == (dim, f, e, v), r
+        between(r["iterations"], 18, 30, f"CG iterations, {b}^3 boxes, {np} ranks")
+        its.append(r["iterations"])
+    assert abs(its[0] - its[1]) <= 1, f"iterations depend on the number of ranks: {its}"
+
+
+@case
+def coarse_dim_2x2x2(): coarse_dimensions(2)
+
+
+@case
+def coarse_dim_3x3x3(): coarse_dimensions(3)
+
+
+@case
+def coarse_dim_4x4x4(): coarse_dimensions(4)
+
+
+@case
+def coarse_dim_variants():
+    """RGDSW: 6 per interior vertex; GDSW-nr: 3 per component; same with coordinates only."""
+    assert elasticity("-n", 16, "-boxes", 4, "-pc_gdsw_coarse_space", "rgdsw")["coarse"] == 27 * 6
+    assert elasticity("-n", 16, "-boxes", 4, "-pc_gdsw_rotations", "0")["coarse"] == (144 + 108 + 27) * 3
+    assert elasticity("-n", 16, "-boxes", 4, "-nullspace", "none")["coarse"] == (144 + 108 + 27) * 3
+    assert elasticity("-n", 8, "-boxes", 2, "-nullspace", "coords")["coarse"] == 105
+
+
+@case
+def rigid_modes_reproduced():
+    """On a floating body Phi contains the six rigid-body modes (to round-off), with given boxes
+    and with METIS subdomains on two ranks; CG with the null space attached converges."""
+    for opts, np in ((["-boxes", 3, "-n", 9], 1), (["-pc_gdsw_subdomains", 5, "-n", 9], 2)):
+        out = run([ELASTICITY, "-floating", "-check_phi"] + opts, np)
+        err = float(re.search(r"max relative error (\S+)", out).group(1))
+        between(err, 0, 1e-10, "rigid-mode reproduction error")
+        its = int(re.search(r"iterations (\d+) reason CONVERGED", out).group(1))
+        between(its, 5, 40, "CG iterations, floating body")
+
+
+# ---- iteration counts ----------------------------------------------------------------------
+@case
+def scalability_boxes():
+    """H/h = 4, 8 -> 64 box subdomains: GDSW flat (<= 15 %), one-level grows; GDSW-nr and
+    RGDSW lie in between."""
+    it = {}
+    for name, opts in (("gdsw", []), ("nr", ["-pc_gdsw_rotations", "0"]), ("rgdsw", ["-pc_gdsw_coarse_space", "rgdsw"]),
+                       ("os1", ["-pc_gdsw_coarse_space", "none"])):
+        it[name] = [elasticity("-n", 4 * b, "-boxes", b, *opts)["iterations"] for b in (2, 4)]
+    print(it)
+    assert it["gdsw"][1] <= 1.15 * it["gdsw"][0], it
+    assert it["os1"][1] >= 1.5 * it["os1"][0], it
+    for v in ("nr", "rgdsw"):
+        assert it["gdsw"][1] <= it[v][1] <= it["os1"][1], it
+    between(it["gdsw"][1], 20, 30, "GDSW iterations, 64 subdomains")
+
+
+@case
+def scalability_metis():
+    """8 -> 64 METIS subdomains of one rank's graph (no mesh information): GDSW flat, one-level grows."""
+    g = [elasticity("-n", 16, "-pc_gdsw_subdomains", n)["iterations"] for n in (8, 64)]
+    o = [elasticity("-n", 16, "-pc_gdsw_subdomains", n, "-pc_gdsw_coarse_space", "none")["iterations"] for n in (8, 64)]
+    print("gdsw", g, "one-level", o)
+    assert g[1] <= 1.15 * g[0] and g[1] <= 32, g
+    assert o[1] >= 1.3 * o[0], o
+    between(elasticity("-n", 16, "-pc_gdsw_subdomains", 32, np=2)["iterations"], 20, 32, "GDSW, 2 ranks x 32 subdomains")
+
+
+@case
+def matrix_types():
+    """BAIJ and SBAIJ operators give the AIJ result (the driver's Dirichlet elimination needs
+    MatZeroRowsColumns, which MPISBAIJ lacks: SBAIJ on one rank)."""
+    ref = elasticity("-n", 8, "-boxes", 2)
+    for t, ranks in (("baij", (1, 2)), ("sbaij", (1,))):
+        for np in ranks:
+            r = elasticity("-n", 8, "-boxes", 2, "-mat_type", t, np=np)
+            assert (r["coarse"], r["iterations"]) == (ref["coarse"], ref["iterations"]), (t, r, ref)
+
+
+@case
+def variants_gmres():
+    """Restricted first level and multiplicative combination (nonsymmetric: GMRES) need fewer
+    iterations than the symmetric additive method."""
+    ref = elasticity("-n", 16, "-boxes", 4, "-ksp_type", "gmres")["iterations"]
+    ras = elasticity("-n", 16, "-boxes", 4, "-ksp_type", "gmres", "-pc_gdsw_first_level_type", "restricted")["iterations"]
+    mul = elasticity("-n", 16, "-boxes", 4, "-ksp_type", "gmres", "-pc_gdsw_combination", "multiplicative")["iterations"]
+    print("additive", ref, "restricted", ras, "multiplicative", mul)
+    assert ras < ref and mul < ref
+    between(ras, 10, 22, "RAS GMRES iterations")
+
+
+@case
+def reuse_new_values():
+    """A second setup with new values and the same pattern (the checkerboard coefficient jumps
+    to 1e3) matches a fresh setup; keeping Phi (-pc_gdsw_reuse_coarse_basis) costs iterations."""
+    opts = ["-n", 12, "-boxes", 3, "-jump_boxes", 2]
+    fresh = elasticity(*opts, "-jump", 1000)["iterations"]
+    for np in (1, 2):
+        again = elasticity(*opts, "-resolve_jump", 1000, np=np)[1]["iterations"]
+        assert again == fresh, (again, fresh)
+    kept = elasticity(*opts, "-resolve_jump", 1000, "-pc_gdsw_reuse_coarse_basis")[1]["iterations"]
+    between(kept, fresh + 2, 2 * fresh, "iterations with the old coarse basis")
+
+
+@case
+def local_solvers():
+    """Every local direct solver gives the same iteration count; ILU converges with more."""
+    ref = elasticity("-n", 8, "-boxes", 2)["iterations"]
+    for s in ("petsc", "mumps", "umfpack"):
+        assert elasticity("-n", 8, "-boxes", 2, "-pc_gdsw_sub_pc_factor_mat_solver_type", s)["iterations"] == ref
+    between(elasticity("-n", 8, "-boxes", 2, "-pc_gdsw_sub_pc_type", "ilu")["iterations"], ref + 1, 200, "iterations, ILU(0) local solves")
+
+
+# ---- the PC as seen by PETSc users -----------------------------------------------------------
+@case
+def view_and_log():
+    out = run([ELASTICITY, "-n", 8, "-boxes", 2, "-ksp_view", "-log_view"])
+    for s in ("type: gdsw", "coarse space gdsw, additive combination", "8 subdomains (given by the application)",
+              "12 faces, 6 edges, 1 vertices", "coarse dimension 105", "prefix -pc_gdsw_coarse_", "prefix -pc_gdsw_sub_",
+              "GDSWDecomp", "GDSWInterface", "GDSWBasis", "GDSWExtension", "GDSWCoarseSetUp", "GDSWLocalFactor", "GDSWApply"):
+        assert s in out, f"missing in -ksp_view/-log_view output: {s!r}"
+    out = run([ELASTICITY, "-help"])
+    for s in ("-pc_gdsw_subdomains <now 1", "-pc_gdsw_overlap <now 1", "-pc_gdsw_coarse_space <now gdsw", "-pc_gdsw_rotations: <TRUE",
+              "-pc_gdsw_combination <now additive", "-pc_gdsw_first_level_type <now additive", "-pc_gdsw_reuse_coarse_basis: <FALSE",
+              "-pc_gdsw_sub_pc_type", "-pc_gdsw_extension_pc_type", "-pc_gdsw_coarse_pc_type"):
+        assert s in out, f"missing in -help: {s!r}"
+
+
+@case
+def client_ex56():
+    """PETSc's ksp/tutorials/ex56, unmodified, with -dll_append and its near-null space (a soft
+    inclusion, alpha = 1e-3: the one-level method needs 61 iterations)."""
+    for np, opts in ((1, ["-pc_gdsw_subdomains", 8]), (2, ["-pc_gdsw_subdomains", 4])):
+        out = run([EX56, "-ne", 11, "-use_mat_nearnullspace", "-ksp_type", "cg", "-ksp_rtol", "1e-8", "-ksp_converged_reason",
+                   "-dll_append", LIB, "-pc_type", "gdsw"] + opts, np)
+        its = int(re.search(r"CONVERGED_RTOL iterations (\d+)", out).group(1))
+        between(its, 20, 45, f"ex56 CG iterations ({np} ranks)")
+
+
+@case
+def client_ex71():
+    """PETSc's ksp/tutorials/ex71 elasticity on 8 ranks, MATIS (its subdomains) and AIJ; the
+    published PETSc GDSW count at this size is 30."""
+    for mt in ("is", "aij"):
+        out = run([EX71, "-pde_type", "Elasticity", "-dim", 3, "-cells", "7,7,7", "-dm_mat_type", mt, "-ksp_type", "cg",
+                   "-ksp_rtol", "1e-8", "-ksp_converged_reason", "-dll_append", LIB, "-pc_type", "gdsw"], 8)
+        its = int(re.search(r"CONVERGED_RTOL iterations (\d+)", out).group(1))
+        between(its, 15, 30, f"ex71 CG iterations ({mt})")
+
+
+# ---- bad input: a clear message, no crash, no hang --------------------------------------------
+BAD = {
+    "nonsquare": "the operator must be square; it is 12 x 10",
+    "unassembled": "the operator is not assembled",
+    "coordinates": "PCSetCoordinates() gave",
+    "nullspace_length": "near-null space vector 0 has local length",
+    "floating": "the operator is singular: it has no Dirichlet row",
+    "partial_node": "it must contain every dof of each node it touches",
+    "uncovered": "lies in no subdomain",
+}
+
+
+@case
+def bad_input():
+    for name, msg in BAD.items():
+        for np in (1, 2):
+            out = run([BAD_INPUT, "-case", name], np, fail=True)
+            assert msg in out, f"case {name}: message {msg!r} not found"
+            assert "Segmentation" not in out and "signal" not in out.lower()
+
+
+@case
+def bad_options():
+    for opts, msg in ((["-pc_gdsw_overlap", -1], "-pc_gdsw_overlap -1 is out of range"),
+                      (["-pc_gdsw_subdomains", 0], "-pc_gdsw_subdomains 0 is out of range"),
+                      (["-pc_gdsw_coarse_space", "fancy"], "Unknown option fancy for -pc_gdsw_coarse_space")):
+        out = run([ELASTICITY, "-n", 4] + opts, 2, fail=True)
+        assert msg in out, msg
+    out = run([EX71, "-pde_type", "Elasticity", "-dim", 3, "-cells", "3,3,3", "-dll_append", LIB, "-pc_type", "gdsw",
+               "-pc_gdsw_subdomains", 2], 2, fail=True)
+    assert "-pc_gdsw_subdomains 2 is not available for a MATIS operator" in out
+
+
+@case
+def empty_subdomain():
+    """An empty subdomain from the application is dropped; the solve still converges."""
+    for np in (1, 2):
+        out = run([BAD_INPUT, "-case", "empty_subdomain", "-ksp_type", "cg", "-ksp_rtol", "1e-8"], np)
+        between(int(re.search(r"iterations (\d+)", out).group(1)), 1, 10, "iterations")
+
+
+if __name__ == "__main__":
+    if sys.argv[1:] == ["--list"]:
+        print("\n".join(f"gdsw.{n}" for n in CASES))
+        sys.exit(0)
+    CASES[sys.argv[1].removeprefix("gdsw.")]()
+    print("PASS")

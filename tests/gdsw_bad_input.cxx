@@ -1,0 +1,116 @@
+static const char help[] = "Feeds PCGDSW one kind of bad input (-case <name>) so that tests can check its error message.\n"
+                           "Cases: nonsquare, unassembled, coordinates, nullspace_length, floating, partial_node, uncovered, empty_subdomain.\n";
+
+/* A block-diagonal operator kron(L, I_bs), L the 1D Laplacian with n nodes (Dirichlet rows at
+   both ends unless -case floating), is enough to reach each check. */
+#include <petscgdsw.h>
+#include <string>
+#include <vector>
+
+static PetscErrorCode Laplacian(PetscInt n, PetscInt bs, PetscBool dirichlet, Mat *A)
+{
+  PetscInt rstart, rend;
+
+  PetscFunctionBegin;
+  PetscCall(MatCreateAIJ(PETSC_COMM_WORLD, PETSC_DECIDE, PETSC_DECIDE, n * bs, n * bs, 3, nullptr, 3, nullptr, A));
+  PetscCall(MatSetBlockSize(*A, bs));
+  PetscCall(MatGetOwnershipRange(*A, &rstart, &rend));
+  auto fixed = [&](PetscInt i) { return dirichlet && (i == 0 || i == n - 1); };
+  for (PetscInt r = rstart; r < rend; r++) {
+    const PetscInt i = r / bs;
+    PetscInt       deg = 0;
+    for (PetscInt j : {i - 1, i + 1}) {
+      if (j < 0 || j >= n) continue;
+      deg++;
+      if (!fixed(i) && !fixed(j)) PetscCall(MatSetValue(*A, r, r + (j - i) * bs, -1.0, INSERT_VALUES));
+    }
+    PetscCall(MatSetValue(*A, r, r, fixed(i) ? 1.0 : (dirichlet ? 2.0 : (PetscReal)deg), INSERT_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(*A, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*A, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+int main(int argc, char **argv)
+{
+  char     name[64] = "";
+  PetscInt n = 40;
+  Mat      A = nullptr;
+  KSP      ksp;
+  PC       pc;
+  Vec      x, b;
+
+  PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
+  PetscCall(PCGDSWRegister());
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-case", name, sizeof(name), nullptr));
+  const std::string c = name;
+  PetscCall(KSPCreate(PETSC_COMM_WORLD, &ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCGDSW));
+  PetscCall(PCGDSWSetSubdomainsPerRank(pc, 4));
+
+  if (c == "nonsquare") {
+    PetscCall(MatCreateAIJ(PETSC_COMM_WORLD, PETSC_DECIDE, PETSC_DECIDE, 12, 10, 1, nullptr, 1, nullptr, &A));
+    PetscCall(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
+    PetscCall(PCSetOperators(pc, A, A));
+    PetscCall(PCSetUp(pc));
+  } else if (c == "unassembled") {
+    PetscCall(MatCreateAIJ(PETSC_COMM_WORLD, PETSC_DECIDE, PETSC_DECIDE, n, n, 3, nullptr, 3, nullptr, &A));
+    PetscCall(PCSetOperators(pc, A, A));
+    PetscCall(PCSetUp(pc));
+  } else if (c == "coordinates") { /* 3 coordinates per node, but a number of nodes that does not divide the rows */
+    PetscInt m;
+    PetscCall(Laplacian(n, 1, PETSC_TRUE, &A));
+    PetscCall(MatGetLocalSize(A, &m, nullptr));
+    std::vector<PetscReal> xyz(3 * (m + 1), 0.0);
+    PetscCall(PCSetOperators(pc, A, A));
+    PetscCall(PCSetCoordinates(pc, 3, m + 1, xyz.data()));
+    PetscCall(PCSetUp(pc));
+  } else if (c == "nullspace_length") {
+    Vec          v;
+    MatNullSpace nsp;
+    PetscCall(Laplacian(n, 1, PETSC_TRUE, &A));
+    PetscCall(VecCreateMPI(PETSC_COMM_WORLD, PETSC_DECIDE, n + 3, &v));
+    PetscCall(VecSet(v, 1.0));
+    PetscCall(MatNullSpaceCreate(PETSC_COMM_WORLD, PETSC_FALSE, 1, &v, &nsp));
+    PetscCall(MatSetNearNullSpace(A, nsp));
+    PetscCall(PCSetOperators(pc, A, A));
+    PetscCall(PCSetUp(pc));
+  } else if (c == "floating") {
+    PetscCall(Laplacian(n, 1, PETSC_FALSE, &A));
+    PetscCall(PCSetOperators(pc, A, A));
+    PetscCall(PCSetUp(pc));
+  } else if (c == "partial_node" || c == "uncovered" || c == "empty_subdomain") {
+    PetscInt rstart, rend;
+    PetscCall(Laplacian(n, 3, PETSC_TRUE, &A));
+    PetscCall(MatGetOwnershipRange(A, &rstart, &rend));
+    std::vector<PetscInt> all;
+    for (PetscInt r = rstart; r < rend; r++) all.push_back(r);
+    if (c == "partial_node") all.pop_back();                     /* drops one dof of the last node */
+    if (c == "uncovered") all.resize(all.size() - 3);            /* drops the last node */
+    if (rend < n * 3) /* the closure of this rank's cells reaches the next rank's first node */
+      for (PetscInt d = 0; d < 3; d++) all.push_back(rend + d);
+    IS is[2];
+    PetscCall(ISCreateGeneral(PETSC_COMM_SELF, (PetscInt)all.size(), all.data(), PETSC_COPY_VALUES, &is[0]));
+    PetscCall(ISCreateGeneral(PETSC_COMM_SELF, 0, nullptr, PETSC_COPY_VALUES, &is[1]));
+    PetscCall(KSPSetOperators(ksp, A, A));
+    PetscCall(PCGDSWSetSubdomains(pc, 2, is, nullptr));
+    PetscCall(ISDestroy(&is[0]));
+    PetscCall(ISDestroy(&is[1]));
+    PetscCall(KSPSetFromOptions(ksp));
+    PetscCall(MatCreateVecs(A, &x, &b));
+    PetscCall(VecSet(b, 1.0));
+    PetscCall(KSPSolve(ksp, b, x));
+    PetscInt its;
+    PetscCall(KSPGetIterationNumber(ksp, &its));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "iterations %" PetscInt_FMT "\n", its));
+    PetscCall(VecDestroy(&x));
+    PetscCall(VecDestroy(&b));
+  } else SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-case %s is not one of the cases listed by -help", name);
+
+  PetscCall(MatDestroy(&A));
+  PetscCall(KSPDestroy(&ksp));
+  PetscCall(PetscFinalize());
+  return 0;
+}
