@@ -182,7 +182,7 @@ def view_and_log():
               "12 faces, 6 edges, 1 vertices", "coarse dimension 105", "prefix -pc_gdsw_coarse_", "prefix -pc_gdsw_sub_",
               "GDSWDecomp", "GDSWInterface", "GDSWBasis", "GDSWExtension", "GDSWCoarseSetUp", "GDSWLocalFactor", "GDSWApply"):
         assert s in out, f"missing in -ksp_view/-log_view output: {s!r}"
-    out = run([ELASTICITY, "-help"])
+    out = run([ELASTICITY, "-n", 4, "-boxes", 2, "-help"])
     for s in ("-pc_gdsw_subdomains <now 1", "-pc_gdsw_overlap <now 1", "-pc_gdsw_coarse_space <now gdsw", "-pc_gdsw_rotations: <TRUE",
               "-pc_gdsw_combination <now additive", "-pc_gdsw_first_level_type <now additive", "-pc_gdsw_reuse_coarse_basis: <FALSE",
               "-pc_gdsw_sub_pc_type", "-pc_gdsw_extension_pc_type", "-pc_gdsw_coarse_pc_type"):
