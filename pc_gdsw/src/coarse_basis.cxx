@@ -164,7 +164,7 @@ static PetscErrorCode SetUpExtension(PC pc, Subdomain &s)
   PetscCall(PetscObjectIncrementTabLevel((PetscObject)s.kspII, (PetscObject)pc, 1));
   PetscCall(KSPSetOptionsPrefix(s.kspII, ((PetscObject)pc)->prefix));
   PetscCall(KSPAppendOptionsPrefix(s.kspII, "pc_gdsw_extension_"));
-  PetscCall(GDSWDefaultFactorSolver(s.kspII, nullptr));
+  PetscCall(GDSWDefaultFactorSolver(s.kspII, nullptr, gd->symmetric));
   PetscCall(KSPSetFromOptions(s.kspII));
   PetscFunctionReturn(0);
 }

@@ -48,11 +48,11 @@ PetscErrorCode GDSWSetUpCoarseSolver(PC pc)
     PetscCall(PetscObjectIncrementTabLevel((PetscObject)gd->coarseKsp, (PetscObject)pc, 1));
     PetscCall(KSPSetOptionsPrefix(gd->coarseKsp, ((PetscObject)pc)->prefix));
     PetscCall(KSPAppendOptionsPrefix(gd->coarseKsp, "pc_gdsw_coarse_"));
-    PetscCall(GDSWDefaultFactorSolver(gd->coarseKsp, MATSOLVERMUMPS));
+    PetscCall(GDSWDefaultFactorSolver(gd->coarseKsp, MATSOLVERMUMPS, gd->symmetric));
     PetscCall(KSPSetOperators(gd->coarseKsp, gd->A0, gd->A0));
     PetscCall(KSPSetFromOptions(gd->coarseKsp));
     PetscCall(KSPGetPC(gd->coarseKsp, &cpc));
-    PetscCall(PetscObjectTypeCompare((PetscObject)cpc, PCLU, &isMumps));
+    PetscCall(PetscObjectTypeCompareAny((PetscObject)cpc, &isMumps, PCLU, PCCHOLESKY, ""));
     if (floating && isMumps) {
       /* the null space is attached: let MUMPS detect the null pivots of A_0 */
       MatSolverType st;

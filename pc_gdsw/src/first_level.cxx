@@ -75,7 +75,7 @@ PetscErrorCode GDSWSetUpFirstLevel(PC pc, MatReuse reuse)
       PetscCall(PetscObjectIncrementTabLevel((PetscObject)s.ksp, (PetscObject)pc, 1));
       PetscCall(KSPSetOptionsPrefix(s.ksp, ((PetscObject)pc)->prefix));
       PetscCall(KSPAppendOptionsPrefix(s.ksp, "pc_gdsw_sub_"));
-      PetscCall(GDSWDefaultFactorSolver(s.ksp, nullptr));
+      PetscCall(GDSWDefaultFactorSolver(s.ksp, nullptr, gd->symmetric));
       PetscCall(KSPSetFromOptions(s.ksp));
     }
     PetscCall(KSPSetOperators(s.ksp, s.Aovl, s.Aovl));

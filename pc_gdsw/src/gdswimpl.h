@@ -73,6 +73,7 @@ typedef struct {
   /* derived */
   Mat       A;                            /* the operator as (MPI)AIJ */
   PetscInt  bs;                           /* dofs per node */
+  PetscBool symmetric;                    /* chooses Cholesky for the default solvers */
   PetscInt  nz;                           /* null-space vectors per node */
   PetscBool haveCoords;                   /* nodeData holds coordinates (rigid modes built here) */
   PetscInt  dataWidth;                    /* reals per node in nodeData */
@@ -106,7 +107,7 @@ PETSC_INTERN PetscErrorCode GDSWSetUpCoarseSolver(PC);
 PETSC_INTERN PetscErrorCode GDSWSetUpFirstLevel(PC, MatReuse);
 PETSC_INTERN PetscErrorCode GDSWApplyFirstLevel(PC, Vec, Vec);
 PETSC_INTERN PetscErrorCode GDSWApplyCoarse(PC, Vec, Vec);
-PETSC_INTERN PetscErrorCode GDSWDefaultFactorSolver(KSP, MatSolverType);
+PETSC_INTERN PetscErrorCode GDSWDefaultFactorSolver(KSP, MatSolverType, PetscBool);
 
 PETSC_INTERN PetscLogEvent GDSW_Decomposition, GDSW_Interface, GDSW_Basis, GDSW_Extension,
   GDSW_CoarseSetUp, GDSW_LocalFactor, GDSW_Apply;
