@@ -211,6 +211,31 @@ def client_ex71():
         between(its, 15, 30, f"ex71 CG iterations ({mt})")
 
 
+@case
+def installed_consumer():
+    """The installed library, header and pkg-config file serve an outside C program (a 2D
+    Laplacian, 16 METIS subdomains per rank, scalar null space)."""
+    import shutil
+    import tempfile
+    prefix = tempfile.mkdtemp(prefix="gdsw-install-")
+    try:
+        subprocess.run(["cmake", "--install", BUILD, "--prefix", prefix], check=True, stdout=subprocess.DEVNULL)
+        pc = subprocess.run(["pkg-config", "--cflags", "--libs", "petscgdsw"], check=True, text=True, stdout=subprocess.PIPE,
+                            env=dict(ENV, PKG_CONFIG_PATH=os.path.join(prefix, "lib", "pkgconfig"))).stdout.split()
+        exe = os.path.join(prefix, "consumer")
+        subprocess.run(["mpicc", "-O2", "-o", exe, os.path.join(os.path.dirname(__file__), "consumer", "main.c")] + pc, check=True)
+        one = run([exe, "-pc_type", "gdsw", "-pc_gdsw_subdomains", 16])
+        gd = int(re.search(r"iterations (\d+)", one).group(1))
+        os1 = int(re.search(r"iterations (\d+)", run([exe, "-pc_type", "gdsw", "-pc_gdsw_subdomains", 16, "-pc_gdsw_coarse_space", "none"])).group(1))
+        two = int(re.search(r"iterations (\d+)", run([exe, "-pc_type", "gdsw", "-pc_gdsw_subdomains", 8], 2)).group(1))
+        print("gdsw", gd, "one-level", os1, "2 ranks", two)
+        between(gd, 15, 32, "GDSW CG iterations, 2D Laplacian")
+        assert os1 > gd, (os1, gd)
+        between(two, 15, 32, "GDSW CG iterations, 2 ranks")
+    finally:
+        shutil.rmtree(prefix)
+
+
 # ---- bad input: a clear message, no crash, no hang --------------------------------------------
 BAD = {
     "nonsquare": "the operator must be square; it is 12 x 10",

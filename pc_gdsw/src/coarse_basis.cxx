@@ -210,23 +210,28 @@ static PetscErrorCode InsertPhi(PC pc, Mat P)
     PetscCall(ISGetLocalSize(s.isG, &nG));
     PetscCall(ISGetIndices(s.isI, &I));
     PetscCall(ISGetIndices(s.isG, &G));
+    std::vector<PetscScalar> row(ncols);
     if (nI) {
       const PetscScalar *x;
       PetscCall(MatDenseGetArrayRead(s.PhiI, &x));
       for (PetscInt r = 0; r < nI; r++) {
-        const PetscInt row = s.nodes[I[r] / bs] * bs + I[r] % bs;
-        for (PetscInt j = 0; j < ncols; j++) PetscCall(MatSetValue(P, row, cols[j], x[j * nI + r], INSERT_VALUES));
+        const PetscInt grow = s.nodes[I[r] / bs] * bs + I[r] % bs;
+        for (PetscInt j = 0; j < ncols; j++) row[j] = x[j * nI + r];
+        PetscCall(MatSetValues(P, 1, &grow, ncols, cols.data(), row.data(), INSERT_VALUES));
       }
       PetscCall(MatDenseRestoreArrayRead(s.PhiI, &x));
     }
     const PetscScalar *y;
     PetscCall(MatDenseGetArrayRead(s.PhiG, &y));
+    std::vector<PetscInt> nzCols;
     for (PetscInt r = 0; r < nG; r++) {
       const PetscInt a = G[r] / bs;
       if ((*gd->sets)[s.setOf[a]][0] != s.gid) continue;
-      const PetscInt row = s.nodes[a] * bs + G[r] % bs;
+      const PetscInt grow = s.nodes[a] * bs + G[r] % bs;
+      nzCols.clear();
       for (PetscInt j = 0; j < ncols; j++)
-        if (y[j * nG + r] != 0.0) PetscCall(MatSetValue(P, row, cols[j], y[j * nG + r], INSERT_VALUES));
+        if (y[j * nG + r] != 0.0) row[nzCols.size()] = y[j * nG + r], nzCols.push_back(cols[j]);
+      PetscCall(MatSetValues(P, 1, &grow, (PetscInt)nzCols.size(), nzCols.data(), row.data(), INSERT_VALUES));
     }
     PetscCall(MatDenseRestoreArrayRead(s.PhiG, &y));
     PetscCall(ISRestoreIndices(s.isI, &I));
