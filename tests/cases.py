@@ -169,8 +169,9 @@ def reuse_new_values():
 def local_solvers():
     """Every local direct solver gives the same iteration count; ILU converges with more."""
     ref = elasticity("-n", 8, "-boxes", 2)["iterations"]
-    for s in ("petsc", "mumps", "umfpack"):
-        assert elasticity("-n", 8, "-boxes", 2, "-pc_gdsw_sub_pc_factor_mat_solver_type", s)["iterations"] == ref
+    for t, s in (("cholesky", "cholmod"), ("cholesky", "petsc"), ("lu", "umfpack"), ("lu", "mumps"), ("lu", "petsc")):
+        assert elasticity("-n", 8, "-boxes", 2, "-pc_gdsw_sub_pc_type", t, "-pc_gdsw_sub_pc_factor_mat_solver_type", s,
+                          "-pc_gdsw_extension_pc_type", t, "-pc_gdsw_extension_pc_factor_mat_solver_type", s)["iterations"] == ref
     between(elasticity("-n", 8, "-boxes", 2, "-pc_gdsw_sub_pc_type", "ilu")["iterations"], ref + 1, 200, "iterations, ILU(0) local solves")
 
 
@@ -243,6 +244,7 @@ BAD = {
     "coordinates": "PCSetCoordinates() gave",
     "nullspace_length": "near-null space vector 0 has local length",
     "floating": "the operator is singular: it has no Dirichlet row",
+    "singular": "could not be factored (FACTOR_NUMERIC_ZEROPIVOT)",
     "partial_node": "it must contain every dof of each node it touches",
     "uncovered": "lies in no subdomain",
 }

@@ -1,5 +1,5 @@
 static const char help[] = "Feeds PCGDSW one kind of bad input (-case <name>) so that tests can check its error message.\n"
-                           "Cases: nonsquare, unassembled, coordinates, nullspace_length, floating, partial_node, uncovered, empty_subdomain.\n";
+                           "Cases: nonsquare, unassembled, coordinates, nullspace_length, singular, floating, partial_node, uncovered, empty_subdomain.\n";
 
 /* A block-diagonal operator kron(L, I_bs), L the 1D Laplacian with n nodes (Dirichlet rows at
    both ends unless -case floating), is enough to reach each check. */
@@ -77,6 +77,12 @@ int main(int argc, char **argv)
     PetscCall(MatSetNearNullSpace(A, nsp));
     PetscCall(PCSetOperators(pc, A, A));
     PetscCall(PCSetUp(pc));
+  } else if (c == "singular") { /* one dof with an all-zero row and column */
+    PetscInt mid = n / 2;
+    PetscCall(Laplacian(n, 1, PETSC_TRUE, &A));
+    PetscCall(MatZeroRowsColumns(A, 1, &mid, 0.0, nullptr, nullptr));
+    PetscCall(PCSetOperators(pc, A, A));
+    PetscCall(PCSetUp(pc));
   } else if (c == "floating") {
     PetscCall(Laplacian(n, 1, PETSC_FALSE, &A));
     PetscCall(PCSetOperators(pc, A, A));
@@ -114,3 +120,14 @@ int main(int argc, char **argv)
   PetscCall(PetscFinalize());
   return 0;
 }
+
+/*TEST
+
+   # PETSc test-harness format (config/testparse.py); run with scripts/petsc-harness.
+   # The one case that must converge: an empty subdomain given by the application is dropped.
+   test:
+      suffix: empty_subdomain
+      nsize: 2
+      args: -case empty_subdomain -ksp_type cg
+
+TEST*/

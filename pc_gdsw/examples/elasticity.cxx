@@ -325,3 +325,23 @@ int main(int argc, char **argv)
   PetscCall(PetscFinalize());
   return 0;
 }
+
+/*TEST
+
+   # PETSc test-harness format (config/testparse.py); run with scripts/petsc-harness.
+   # No reference output: the summary line carries timings, so the harness checks that the
+   # solve ran and converged instead of diffing.
+   test:
+      suffix: boxes
+      nsize: {{1 2}}
+      args: -n 8 -boxes 2
+
+   test:
+      suffix: metis
+      args: -n 16 -pc_gdsw_subdomains 8
+
+   test:
+      suffix: rgdsw
+      args: -n 8 -boxes 2 -pc_gdsw_coarse_space rgdsw
+
+TEST*/

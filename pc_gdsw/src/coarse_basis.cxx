@@ -185,6 +185,7 @@ static PetscErrorCode Extend(PC pc, Subdomain &s, MatReuse reuse)
   PetscCall(MatScale(B, -1.0));
   if (reuse == MAT_INITIAL_MATRIX) PetscCall(MatDuplicate(B, MAT_DO_NOT_COPY_VALUES, &s.PhiI));
   PetscCall(KSPSetOperators(s.kspII, s.AII, s.AII));
+  PetscCall(GDSWSetUpLocalSolver(s.kspII, "interior", s.gid));
   PetscCall(KSPMatSolve(s.kspII, B, s.PhiI));
   PetscCall(MatDestroy(&B));
   PetscFunctionReturn(0);

@@ -71,7 +71,7 @@ PetscErrorCode GDSWSetUpCoarseSolver(PC pc)
   PetscCall(KSPGetPC(gd->coarseKsp, &cpc));
   PetscCall(PCGetFailedReason(cpc, &reason));
   PetscCheck(reason == PC_NOERROR, PetscObjectComm((PetscObject)pc), PETSC_ERR_MAT_LU_ZRPVT,
-             "PCGDSW: the coarse matrix A_0 = Phi^T A Phi (dimension %" PetscInt_FMT ") could not be factored (%s): A is singular on the coarse space; check the Dirichlet conditions and the near-null space",
+             "PCGDSW: the coarse matrix A_0 = Phi^T A Phi (dimension %" PetscInt_FMT ") could not be factored (%s): A is singular on the coarse space or in a subdomain interior; check the Dirichlet conditions, the near-null space and rows that are entirely zero",
              gd->coarseDim, PCFailedReasons[reason]);
   PetscCall(PetscLogEventEnd(GDSW_CoarseSetUp, pc, 0, 0, 0));
   PetscFunctionReturn(0);

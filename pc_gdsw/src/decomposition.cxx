@@ -101,16 +101,22 @@ static PetscErrorCode PartitionNodes(const LocalGraph &g, PetscInt nparts, std::
     for (PetscInt a = 0; a < nn; a++) part[a] = a;
     PetscFunctionReturn(0);
   }
+  /* connected subdomains when the graph allows (METIS refuses CONTIG on a disconnected graph) */
+  std::vector<char>     seen(nn, 0);
+  std::vector<PetscInt> stack(1, 0);
+  PetscInt              reached = 0;
+  for (seen[0] = 1; !stack.empty(); reached++) {
+    const PetscInt a = stack.back();
+    stack.pop_back();
+    for (PetscInt k = g.xadj[a]; k < g.xadj[a + 1]; k++)
+      if (!seen[g.adj[k]]) seen[g.adj[k]] = 1, stack.push_back(g.adj[k]);
+  }
   std::vector<idx_t> xadj(g.xadj.begin(), g.xadj.end()), adj(g.adj.begin(), g.adj.end()), p(nn);
   idx_t nv = (idx_t)nn, ncon = 1, np = (idx_t)nparts, cut, options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
-  options[METIS_OPTION_SEED]    = 7; /* reproducible decompositions */
-  options[METIS_OPTION_CONTIG]  = 1; /* connected subdomains when the graph allows */
+  options[METIS_OPTION_SEED]   = 7; /* reproducible decompositions */
+  options[METIS_OPTION_CONTIG] = reached == nn;
   int status = METIS_PartGraphKway(&nv, &ncon, xadj.data(), adj.data(), nullptr, nullptr, nullptr, &np, nullptr, nullptr, options, &cut, p.data());
-  if (status != METIS_OK) { /* CONTIG fails on disconnected graphs: retry without it */
-    options[METIS_OPTION_CONTIG] = 0;
-    status = METIS_PartGraphKway(&nv, &ncon, xadj.data(), adj.data(), nullptr, nullptr, nullptr, &np, nullptr, nullptr, options, &cut, p.data());
-  }
   PetscCheck(status == METIS_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "PCGDSW: METIS_PartGraphKway failed (status %d) splitting %" PetscInt_FMT " nodes into %" PetscInt_FMT " subdomains", status, nn, nparts);
   for (PetscInt a = 0; a < nn; a++) part[a] = p[a];
   PetscFunctionReturn(0);
@@ -266,7 +272,7 @@ PetscErrorCode GDSWBuildDecomposition(PC pc)
   for (PetscInt i = 0; i < nloc; i++) {
     gdsw::Subdomain &s = (*gd->sub)[i];
     PetscCall(DofISOfNodes(s.nodes, gd->bs, &s.nonoverlap));
-    if (haveUser && gd->userOvl) PetscCall(ISDuplicate(gd->userOvl[origin[i]], &ovl[i]));
+    if (haveUser && gd->userOvl) PetscCall(ISDuplicate(gd->userOvl[origin[i]], &ovl[i])); /* merged with Omega~_i below */
     else if (!parts.empty()) PetscCall(DofISOfNodes(parts[i], gd->bs, &ovl[i]));
     else PetscCall(ISDuplicate(s.nonoverlap, &ovl[i]));
   }
@@ -289,6 +295,39 @@ PetscErrorCode GDSWBuildDecomposition(PC pc)
     std::set_union(nodes.begin(), nodes.end(), s.nodes.begin(), s.nodes.end(), std::back_inserter(merged));
     PetscCall(DofISOfNodes(merged, gd->bs, &s.overlap));
     PetscCall(ISDestroy(&ovl[i]));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* A(Omega_i^delta, Omega_i^delta) from the parallel operator, and A(Omega~_i, Omega~_i) as its
+   submatrix (Omega~_i lies inside Omega_i^delta): one parallel extraction serves both. */
+PetscErrorCode GDSWExtractSubdomainMatrices(PC pc, MatReuse reuse)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+  auto    &sub = *gd->sub;
+  const PetscInt n = (PetscInt)sub.size();
+
+  PetscFunctionBegin;
+  std::vector<IS> ovl(n);
+  for (PetscInt i = 0; i < n; i++) ovl[i] = sub[i].overlap;
+  PetscCall(MatCreateSubMatrices(gd->A, n, ovl.data(), ovl.data(), reuse, &gd->AovlArr));
+  for (PetscInt i = 0; i < n; i++) {
+    Subdomain &s = sub[i];
+    s.Aovl       = gd->AovlArr[i];
+    if (reuse == MAT_INITIAL_MATRIX) {
+      PetscInt        nn, no;
+      const PetscInt *non, *ov;
+      PetscCall(ISGetLocalSize(s.nonoverlap, &nn));
+      PetscCall(ISGetLocalSize(s.overlap, &no));
+      PetscCall(ISGetIndices(s.nonoverlap, &non));
+      PetscCall(ISGetIndices(s.overlap, &ov));
+      std::vector<PetscInt> pos(nn);
+      for (PetscInt k = 0; k < nn; k++) pos[k] = (PetscInt)(std::lower_bound(ov, ov + no, non[k]) - ov);
+      PetscCall(ISRestoreIndices(s.nonoverlap, &non));
+      PetscCall(ISRestoreIndices(s.overlap, &ov));
+      PetscCall(ISCreateGeneral(PETSC_COMM_SELF, nn, pos.data(), PETSC_COPY_VALUES, &s.nonInOvl));
+    }
+    PetscCall(MatCreateSubMatrix(s.Aovl, s.nonInOvl, s.nonInOvl, reuse, &s.Anon));
   }
   PetscFunctionReturn(0);
 }

@@ -62,13 +62,9 @@ PetscErrorCode GDSWSetUpFirstLevel(PC pc, MatReuse reuse)
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(GDSW_LocalFactor, pc, 0, 0, 0));
-  std::vector<IS> ovl(n);
-  for (PetscInt i = 0; i < n; i++) ovl[i] = sub[i].overlap;
-  PetscCall(MatCreateSubMatrices(gd->A, n, ovl.data(), ovl.data(), reuse, &gd->AovlArr));
   if (reuse == MAT_INITIAL_MATRIX) PetscCall(CreateScatters(pc));
   for (PetscInt i = 0; i < n; i++) {
     Subdomain &s = sub[i];
-    s.Aovl       = gd->AovlArr[i];
     if (!s.ksp) {
       PetscCall(KSPCreate(PETSC_COMM_SELF, &s.ksp));
       PetscCall(KSPSetErrorIfNotConverged(s.ksp, pc->erroriffailure));
@@ -79,14 +75,7 @@ PetscErrorCode GDSWSetUpFirstLevel(PC pc, MatReuse reuse)
       PetscCall(KSPSetFromOptions(s.ksp));
     }
     PetscCall(KSPSetOperators(s.ksp, s.Aovl, s.Aovl));
-    PetscCall(KSPSetUp(s.ksp));
-    PC             spc;
-    PCFailedReason reason;
-    PetscCall(KSPGetPC(s.ksp, &spc));
-    PetscCall(PCGetFailedReason(spc, &reason));
-    PetscCheck(reason == PC_NOERROR, PETSC_COMM_SELF, PETSC_ERR_MAT_LU_ZRPVT,
-               "PCGDSW: the matrix of overlapping subdomain %" PetscInt_FMT " (%" PetscInt_FMT " dofs) could not be factored (%s): the operator is singular or indefinite there; try -pc_gdsw_sub_pc_factor_shift_type nonzero or a different -pc_gdsw_sub_pc_type",
-               s.gid, s.wSize, PCFailedReasons[reason]);
+    PetscCall(GDSWSetUpLocalSolver(s.ksp, "overlapping", s.gid));
   }
   PetscCall(PetscLogEventEnd(GDSW_LocalFactor, pc, 0, 0, 0));
   PetscFunctionReturn(0);

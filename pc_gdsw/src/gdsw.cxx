@@ -32,6 +32,26 @@ PetscErrorCode GDSWDefaultFactorSolver(KSP ksp, MatSolverType solver, PetscBool 
   PetscFunctionReturn(0);
 }
 
+/* Set up a subdomain solver; a failed factorisation stops with a sentence, not a NaN later. */
+PetscErrorCode GDSWSetUpLocalSolver(KSP ksp, const char *what, PetscInt gid)
+{
+  PC             pc;
+  PCFailedReason reason;
+  Mat            A;
+  PetscInt       n;
+
+  PetscFunctionBegin;
+  PetscCall(KSPSetUp(ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCGetFailedReason(pc, &reason));
+  PetscCall(KSPGetOperators(ksp, &A, nullptr));
+  PetscCall(MatGetSize(A, &n, nullptr));
+  PetscCheck(reason == PC_NOERROR, PETSC_COMM_SELF, PETSC_ERR_MAT_LU_ZRPVT,
+             "PCGDSW: the %s matrix of subdomain %" PetscInt_FMT " (%" PetscInt_FMT " dofs) could not be factored (%s): the operator is singular or indefinite there; for an indefinite symmetric operator use -pc_gdsw_sub_pc_type lu -pc_gdsw_extension_pc_type lu, or try -pc_gdsw_sub_pc_factor_shift_type nonzero",
+             what, gid, n, PCFailedReasons[reason]);
+  PetscFunctionReturn(0);
+}
+
 /* Symmetric as flagged by the application, or up to round-off in the assembled values. */
 static PetscErrorCode IsSymmetric(Mat A, PetscBool *symmetric)
 {
@@ -59,6 +79,8 @@ static PetscErrorCode PCReset_GDSW(PC pc)
     PetscCall(ISDestroy(&s.overlap));
     PetscCall(ISDestroy(&s.isI));
     PetscCall(ISDestroy(&s.isG));
+    PetscCall(ISDestroy(&s.nonInOvl));
+    PetscCall(MatDestroy(&s.Anon));
     PetscCall(MatDestroy(&s.AII));
     PetscCall(MatDestroy(&s.AIG));
     PetscCall(MatDestroy(&s.PhiG));
@@ -69,7 +91,6 @@ static PetscErrorCode PCReset_GDSW(PC pc)
     PetscCall(VecDestroy(&s.y));
   }
   const PetscInt n = (PetscInt)gd->sub->size();
-  if (gd->AnonArr) PetscCall(MatDestroySubMatrices(n, &gd->AnonArr));
   if (gd->AovlArr) PetscCall(MatDestroySubMatrices(n, &gd->AovlArr));
   gd->sub->clear();
   gd->sets->clear();
@@ -177,6 +198,7 @@ static PetscErrorCode PCSetUp_GDSW(PC pc)
     PetscCall(IsSymmetric(gd->A, &gd->symmetric));
     PetscCall(PetscLogEventBegin(GDSW_Decomposition, pc, 0, 0, 0));
     PetscCall(GDSWBuildDecomposition(pc));
+    PetscCall(GDSWExtractSubdomainMatrices(pc, MAT_INITIAL_MATRIX));
     PetscCall(PetscLogEventEnd(GDSW_Decomposition, pc, 0, 0, 0));
     PetscCall(PetscLogEventBegin(GDSW_Interface, pc, 0, 0, 0));
     PetscCall(GDSWBuildInterface(pc));
@@ -192,13 +214,9 @@ static PetscErrorCode PCSetUp_GDSW(PC pc)
   } else {
     /* same pattern, new values (Newton, time stepping): numeric refactorisations only */
     PetscCall(GetAIJOperator(pc, MAT_REUSE_MATRIX));
+    PetscCall(GDSWExtractSubdomainMatrices(pc, MAT_REUSE_MATRIX));
     if (gd->coarseActive) {
-      if (!gd->reuseCoarseBasis) {
-        std::vector<IS> non;
-        for (auto &s : *gd->sub) non.push_back(s.nonoverlap);
-        PetscCall(MatCreateSubMatrices(gd->A, (PetscInt)non.size(), non.data(), non.data(), MAT_REUSE_MATRIX, &gd->AnonArr));
-        PetscCall(GDSWUpdateCoarseBasis(pc));
-      }
+      if (!gd->reuseCoarseBasis) PetscCall(GDSWUpdateCoarseBasis(pc));
       PetscCall(GDSWSetUpCoarseSolver(pc));
     }
     PetscCall(GDSWSetUpFirstLevel(pc, MAT_REUSE_MATRIX));

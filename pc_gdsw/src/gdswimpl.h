@@ -1,5 +1,5 @@
 /* Private data of PCGDSW. The setup is a pipeline of modules, each in its own file:
-     decomposition.cxx  nonoverlapping subdomains Omega~_i and overlapping Omega_i^delta
+     decomposition.cxx  nonoverlapping subdomains Omega~_i and overlapping Omega_i^delta, their matrices
      interface.cxx      sharing sets, Dirichlet dofs, interface components, coarse numbering
      coarse_basis.cxx   Phi_Gamma per component, harmonic extension Phi_I, global Phi
      coarse_solver.cxx  A_0 = Phi^T A Phi and its solver
@@ -42,7 +42,8 @@ struct Subdomain {
   std::vector<PetscReal> nodeData;      /* per node: coordinates (dim) or null-space rows (nz*bs) */
   std::vector<CoarseGroup> groups;
   /* harmonic extension */
-  Mat Anon = nullptr;                   /* A(Omega~_i, Omega~_i), owned by PC_GDSW::AnonArr */
+  Mat Anon = nullptr;                   /* A(Omega~_i, Omega~_i), a submatrix of Aovl */
+  IS  nonInOvl = nullptr;               /* positions of Omega~_i's dofs within Omega_i^delta */
   KSP kspII = nullptr;                  /* interior solver */
   Mat AII = nullptr, AIG = nullptr;
   IS  isI = nullptr, isG = nullptr;     /* local dofs of Omega~_i: interior / interface */
@@ -83,7 +84,7 @@ typedef struct {
   PetscSF   nodeSF;                       /* leaves: nodes of every local Omega~_i; roots: owned nodes */
   PetscInt  nDirichletRows;               /* global count */
   PetscInt  counts[3];                    /* faces, edges, vertices (global) */
-  Mat      *AnonArr, *AovlArr;           /* subdomain matrices, as MatCreateSubMatrices() made them */
+  Mat      *AovlArr;                     /* A(Omega_i^delta, Omega_i^delta), as MatCreateSubMatrices() made them */
   /* coarse level */
   Mat Phi, A0;
   Mat PhiFull;                            /* Phi before dropping zero columns (== Phi if none) */
@@ -100,6 +101,7 @@ typedef struct {
 
 /* module entry points */
 PETSC_INTERN PetscErrorCode GDSWBuildDecomposition(PC);
+PETSC_INTERN PetscErrorCode GDSWExtractSubdomainMatrices(PC, MatReuse);
 PETSC_INTERN PetscErrorCode GDSWBuildInterface(PC);
 PETSC_INTERN PetscErrorCode GDSWBuildCoarseBasis(PC);
 PETSC_INTERN PetscErrorCode GDSWUpdateCoarseBasis(PC);
@@ -108,6 +110,7 @@ PETSC_INTERN PetscErrorCode GDSWSetUpFirstLevel(PC, MatReuse);
 PETSC_INTERN PetscErrorCode GDSWApplyFirstLevel(PC, Vec, Vec);
 PETSC_INTERN PetscErrorCode GDSWApplyCoarse(PC, Vec, Vec);
 PETSC_INTERN PetscErrorCode GDSWDefaultFactorSolver(KSP, MatSolverType, PetscBool);
+PETSC_INTERN PetscErrorCode GDSWSetUpLocalSolver(KSP, const char *, PetscInt);
 
 PETSC_INTERN PetscLogEvent GDSW_Decomposition, GDSW_Interface, GDSW_Basis, GDSW_Extension,
   GDSW_CoarseSetUp, GDSW_LocalFactor, GDSW_Apply;

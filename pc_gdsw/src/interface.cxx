@@ -249,13 +249,9 @@ PetscErrorCode GDSWBuildInterface(PC pc)
   /* per subdomain: its view of sets, masks, data; then components */
   std::map<std::vector<PetscInt>, PetscInt> setIndex;
   gd->sets->clear();
-  std::vector<IS> isNon(sub.size());
-  for (size_t i = 0; i < sub.size(); i++) isNon[i] = sub[i].nonoverlap;
-  PetscCall(MatCreateSubMatrices(gd->A, (PetscInt)sub.size(), isNon.data(), isNon.data(), MAT_INITIAL_MATRIX, &gd->AnonArr));
   PetscInt local[3] = {0, 0, 0};
   for (size_t i = 0; i < sub.size(); i++) {
     Subdomain &s = sub[i];
-    s.Anon       = gd->AnonArr[i];
     const PetscInt n = (PetscInt)s.nodes.size();
     s.setOf.resize(n);
     s.dirMask.assign(leafMask.begin() + s.leaf0, leafMask.begin() + s.leaf0 + n);
