@@ -306,16 +306,15 @@ static PetscErrorCode PCView_GDSW(PC pc, PetscViewer viewer)
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)pc), &rank));
   PetscCall(PetscViewerASCIIPrintf(viewer, "  local solver of the first subdomain (prefix -%spc_gdsw_sub_):\n", ((PetscObject)pc)->prefix ? ((PetscObject)pc)->prefix : ""));
-  if (!gd->sub->empty()) {
-    PetscViewer sv;
-    PetscCall(PetscViewerGetSubViewer(viewer, PETSC_COMM_SELF, &sv));
-    if (rank == 0) {
-      PetscCall(PetscViewerASCIIPushTab(sv));
-      PetscCall(KSPView((*gd->sub)[0].ksp, sv));
-      PetscCall(PetscViewerASCIIPopTab(sv));
-    }
-    PetscCall(PetscViewerRestoreSubViewer(viewer, PETSC_COMM_SELF, &sv));
+  PetscViewer sv; /* collective: every rank takes the subviewer, rank 0 prints */
+  PetscCall(PetscViewerGetSubViewer(viewer, PETSC_COMM_SELF, &sv));
+  if (rank == 0) {
+    PetscCall(PetscViewerASCIIPushTab(sv));
+    if (gd->sub->empty()) PetscCall(PetscViewerASCIIPrintf(sv, "(rank 0 holds no subdomain)\n"));
+    else PetscCall(KSPView((*gd->sub)[0].ksp, sv));
+    PetscCall(PetscViewerASCIIPopTab(sv));
   }
+  PetscCall(PetscViewerRestoreSubViewer(viewer, PETSC_COMM_SELF, &sv));
   PetscFunctionReturn(0);
 }
 
