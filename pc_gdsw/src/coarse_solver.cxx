@@ -1,5 +1,5 @@
-/* Coarse level: A_0 = Phi^T A Phi, factored by the coarse KSP (default: MUMPS LU on all ranks
-   of the PC, options prefix -pc_gdsw_coarse_). */
+/* Coarse solver: A_0 (coarse_operator.cxx) factored by the coarse KSP (default: MUMPS on all
+   ranks of the PC, options prefix -pc_gdsw_coarse_). */
 #include "gdswimpl.h"
 
 /* A floating operator (no Dirichlet row) whose null space is not attached would make A_0
@@ -31,7 +31,7 @@ static PetscErrorCode CheckFloating(PC pc, PetscBool *floating)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode GDSWSetUpCoarseSolver(PC pc)
+PetscErrorCode GDSWSetUpCoarseSolver(PC pc, PetscBool basisCurrent)
 {
   PC_GDSW       *gd = (PC_GDSW *)pc->data;
   PCFailedReason reason;
@@ -40,8 +40,7 @@ PetscErrorCode GDSWSetUpCoarseSolver(PC pc)
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(GDSW_CoarseSetUp, pc, 0, 0, 0));
-  const MatReuse reuse = gd->A0 ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX;
-  PetscCall(MatPtAP(gd->A, gd->Phi, reuse, 2.0, &gd->A0));
+  PetscCall(GDSWAssembleCoarseOperator(pc, basisCurrent));
   if (!gd->coarseKsp) {
     PetscCall(CheckFloating(pc, &floating));
     PetscCall(KSPCreate(PetscObjectComm((PetscObject)pc), &gd->coarseKsp));

@@ -207,7 +207,7 @@ static PetscErrorCode PCSetUp_GDSW(PC pc)
     if (gd->coarseType != PC_GDSW_COARSE_NONE) {
       PetscCall(GDSWBuildCoarseBasis(pc));
       gd->coarseActive = (PetscBool)(gd->coarseDim > 0);
-      if (gd->coarseActive) PetscCall(GDSWSetUpCoarseSolver(pc));
+      if (gd->coarseActive) PetscCall(GDSWSetUpCoarseSolver(pc, PETSC_TRUE));
       else PetscCall(PetscInfo(pc, "the decomposition has no interface: no coarse level\n"));
     }
     PetscCall(GDSWSetUpFirstLevel(pc, MAT_INITIAL_MATRIX));
@@ -217,7 +217,7 @@ static PetscErrorCode PCSetUp_GDSW(PC pc)
     PetscCall(GDSWExtractSubdomainMatrices(pc, MAT_REUSE_MATRIX));
     if (gd->coarseActive) {
       if (!gd->reuseCoarseBasis) PetscCall(GDSWUpdateCoarseBasis(pc));
-      PetscCall(GDSWSetUpCoarseSolver(pc));
+      PetscCall(GDSWSetUpCoarseSolver(pc, (PetscBool)!gd->reuseCoarseBasis));
     }
     PetscCall(GDSWSetUpFirstLevel(pc, MAT_REUSE_MATRIX));
   }

@@ -2,7 +2,8 @@
      decomposition.cxx  nonoverlapping subdomains Omega~_i and overlapping Omega_i^delta, their matrices
      interface.cxx      sharing sets, Dirichlet dofs, interface components, coarse numbering
      coarse_basis.cxx   Phi_Gamma per component, harmonic extension Phi_I, global Phi
-     coarse_solver.cxx  A_0 = Phi^T A Phi and its solver
+     coarse_operator.cxx A_0 = Phi^T A Phi
+     coarse_solver.cxx  the solver of A_0
      first_level.cxx    local solvers on Omega_i^delta and their restriction/prolongation
      gdsw.cxx           the PC object: options, setup order, apply, view */
 #pragma once
@@ -87,6 +88,7 @@ typedef struct {
   Mat      *AovlArr;                     /* A(Omega_i^delta, Omega_i^delta), as MatCreateSubMatrices() made them */
   /* coarse level */
   Mat Phi, A0;
+  PetscBool a0ByPtAP;                     /* A0 was made by MatPtAP (and can be reused by it) */
   Mat PhiFull;                            /* Phi before dropping zero columns (== Phi if none) */
   IS  keptCols;
   KSP coarseKsp;
@@ -105,7 +107,8 @@ PETSC_INTERN PetscErrorCode GDSWExtractSubdomainMatrices(PC, MatReuse);
 PETSC_INTERN PetscErrorCode GDSWBuildInterface(PC);
 PETSC_INTERN PetscErrorCode GDSWBuildCoarseBasis(PC);
 PETSC_INTERN PetscErrorCode GDSWUpdateCoarseBasis(PC);
-PETSC_INTERN PetscErrorCode GDSWSetUpCoarseSolver(PC);
+PETSC_INTERN PetscErrorCode GDSWAssembleCoarseOperator(PC, PetscBool);
+PETSC_INTERN PetscErrorCode GDSWSetUpCoarseSolver(PC, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWSetUpFirstLevel(PC, MatReuse);
 PETSC_INTERN PetscErrorCode GDSWApplyFirstLevel(PC, Vec, Vec);
 PETSC_INTERN PetscErrorCode GDSWApplyCoarse(PC, Vec, Vec);

@@ -1,0 +1,150 @@
+/* The coarse operator A_0 = Phi^T A Phi.
+   When Phi was just extended with exact interior solves, (A Phi) vanishes on interior rows,
+   so A_0 = sum_i Phi_Gamma_i^T (A_GammaI Phi_I + A^_GammaGamma Phi_Gamma)_i: a dense block per
+   subdomain from its own matrices, each Gamma-Gamma coupling counted once (by the subdomain of
+   smallest id containing both nodes). No parallel triple product is needed. Otherwise (a kept
+   basis with new values, or an inexact extension) A_0 comes from MatPtAP. */
+#include "gdswimpl.h"
+#include <petscblaslapack.h>
+#include <algorithm>
+
+using gdsw::Subdomain;
+
+/* Columns of Phi a subdomain touches, in the order of its dense blocks. */
+static std::vector<PetscInt> Columns(const Subdomain &s)
+{
+  std::vector<PetscInt> cols;
+  for (const auto &g : s.groups)
+    for (PetscInt j = 0; j < g.ncols; j++) cols.push_back(g.col0 + j);
+  return cols;
+}
+
+/* Smallest subdomain id in both sorted sets. */
+static PetscInt FirstCommon(const std::vector<PetscInt> &a, const std::vector<PetscInt> &b)
+{
+  for (size_t i = 0, j = 0; i < a.size() && j < b.size();) {
+    if (a[i] == b[j]) return a[i];
+    if (a[i] < b[j]) i++;
+    else j++;
+  }
+  return -1;
+}
+
+/* block = Phi_Gamma^T (A_GammaI Phi_I + A^_GammaGamma Phi_Gamma), ncols x ncols, column-major */
+static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, std::vector<PetscScalar> &block)
+{
+  PC_GDSW          *gd = (PC_GDSW *)pc->data;
+  const PetscInt    bs = gd->bs, nloc = (PetscInt)s.nodes.size() * bs;
+  PetscInt          nI, nG, nrows;
+  const PetscInt   *I, *G, *ia, *ja;
+  const PetscScalar *phiI = nullptr, *phiG, *va;
+  PetscBool         done;
+
+  PetscFunctionBegin;
+  PetscCall(ISGetLocalSize(s.isI, &nI));
+  PetscCall(ISGetLocalSize(s.isG, &nG));
+  PetscCall(ISGetIndices(s.isI, &I));
+  PetscCall(ISGetIndices(s.isG, &G));
+  std::vector<PetscInt> where(nloc, -1); /* local dof -> interior index, or -(Gamma index)-2 */
+  for (PetscInt r = 0; r < nI; r++) where[I[r]] = r;
+  for (PetscInt r = 0; r < nG; r++) where[G[r]] = -r - 2;
+  if (nI) PetscCall(MatDenseGetArrayRead(s.PhiI, &phiI));
+  PetscCall(MatDenseGetArrayRead(s.PhiG, &phiG));
+  PetscCall(MatGetRowIJ(s.Anon, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
+  PetscCall(MatSeqAIJGetArrayRead(s.Anon, &va));
+  std::vector<PetscScalar> C(nG * ncols, 0.0); /* column-major nG x ncols */
+  for (PetscInt r = 0; r < nG; r++) {
+    const PetscInt row = G[r];
+    const auto    &Sr  = (*gd->sets)[s.setOf[row / bs]];
+    for (PetscInt k = ia[row]; k < ia[row + 1]; k++) {
+      const PetscInt w = where[ja[k]];
+      if (w >= 0) {
+        for (PetscInt j = 0; j < ncols; j++) C[j * nG + r] += va[k] * phiI[j * nI + w];
+      } else if (w <= -2 && FirstCommon(Sr, (*gd->sets)[s.setOf[ja[k] / bs]]) == s.gid) {
+        for (PetscInt j = 0; j < ncols; j++) C[j * nG + r] += va[k] * phiG[j * nG + (-w - 2)];
+      }
+    }
+  }
+  PetscCall(MatSeqAIJRestoreArrayRead(s.Anon, &va));
+  PetscCall(MatRestoreRowIJ(s.Anon, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
+  block.assign(ncols * ncols, 0.0);
+  PetscBLASInt m, n, kk;
+  PetscCall(PetscBLASIntCast(ncols, &m));
+  PetscCall(PetscBLASIntCast(ncols, &n));
+  PetscCall(PetscBLASIntCast(nG, &kk));
+  const PetscScalar one = 1.0, zero = 0.0;
+  if (nG) PetscCallBLAS("BLASgemm", BLASgemm_("T", "N", &m, &n, &kk, &one, phiG, &kk, C.data(), &kk, &zero, block.data(), &m));
+  PetscCall(PetscLogFlops(2.0 * nG * ncols * ncols));
+  PetscCall(MatDenseRestoreArrayRead(s.PhiG, &phiG));
+  if (nI) PetscCall(MatDenseRestoreArrayRead(s.PhiI, &phiI));
+  PetscCall(ISRestoreIndices(s.isI, &I));
+  PetscCall(ISRestoreIndices(s.isG, &G));
+  PetscFunctionReturn(0);
+}
+
+/* Exact interior solves: a direct factorisation applied once. */
+static PetscBool ExactExtension(const PC_GDSW *gd)
+{
+  for (const auto &s : *gd->sub) {
+    if (!s.kspII) continue;
+    PC        pc;
+    PetscBool preonly, direct;
+    KSPGetPC(s.kspII, &pc);
+    PetscObjectTypeCompare((PetscObject)s.kspII, KSPPREONLY, &preonly);
+    PetscObjectTypeCompareAny((PetscObject)pc, &direct, PCLU, PCCHOLESKY, "");
+    return (PetscBool)(preonly && direct);
+  }
+  return PETSC_TRUE; /* no interior anywhere on this rank */
+}
+
+static PetscErrorCode AssembleLocal(PC pc, Mat A0)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  for (auto &s : *gd->sub) {
+    const std::vector<PetscInt> cols = Columns(s);
+    if (cols.empty()) continue;
+    std::vector<PetscScalar> block;
+    PetscCall(LocalBlock(pc, s, (PetscInt)cols.size(), block));
+    PetscCall(MatSetValues(A0, (PetscInt)cols.size(), cols.data(), (PetscInt)cols.size(), cols.data(), block.data(), ADD_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(A0, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(A0, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode GDSWAssembleCoarseOperator(PC pc, PetscBool basisCurrent)
+{
+  PC_GDSW  *gd = (PC_GDSW *)pc->data;
+  PetscBool local, localAll;
+
+  PetscFunctionBegin;
+  local = (PetscBool)(basisCurrent && !gd->keptCols && ExactExtension(gd));
+  PetscCallMPI(MPIU_Allreduce(&local, &localAll, 1, MPIU_BOOL, MPI_LAND, PetscObjectComm((PetscObject)pc)));
+  if (gd->A0 && gd->a0ByPtAP != !localAll) PetscCall(MatDestroy(&gd->A0)); /* the other method made it */
+  gd->a0ByPtAP = (PetscBool)!localAll;
+  if (!localAll) {
+    PetscCall(MatPtAP(gd->A, gd->Phi, gd->A0 ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, 2.0, &gd->A0));
+    PetscFunctionReturn(0);
+  }
+  if (!gd->A0) {
+    PetscInt n, N;
+    Mat      pre;
+    PetscCall(MatGetLocalSize(gd->Phi, nullptr, &n));
+    PetscCall(MatGetSize(gd->Phi, nullptr, &N));
+    PetscCall(MatCreate(PetscObjectComm((PetscObject)pc), &pre));
+    PetscCall(MatSetType(pre, MATPREALLOCATOR));
+    PetscCall(MatSetSizes(pre, n, n, N, N));
+    PetscCall(MatSetUp(pre));
+    PetscCall(AssembleLocal(pc, pre));
+    PetscCall(MatCreate(PetscObjectComm((PetscObject)pc), &gd->A0));
+    PetscCall(MatSetType(gd->A0, MATAIJ));
+    PetscCall(MatSetSizes(gd->A0, n, n, N, N));
+    PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, gd->A0));
+    PetscCall(MatDestroy(&pre));
+    PetscCall(MatSetOption(gd->A0, MAT_ROW_ORIENTED, PETSC_FALSE)); /* the blocks are column-major */
+  } else PetscCall(MatZeroEntries(gd->A0));
+  PetscCall(AssembleLocal(pc, gd->A0));
+  PetscFunctionReturn(0);
+}
