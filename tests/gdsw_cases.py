@@ -1,34 +1,16 @@
 #!/usr/bin/env python3
-"""ctest cases for pc_gdsw. Each case runs programs and asserts numbers or messages from their
-output. `cases.py --list` names the cases; `cases.py NAME` runs one (exit status 0 = pass)."""
+"""ctest cases for pc_gdsw: each runs programs and asserts numbers or messages from their output."""
 import os
 import re
 import subprocess
-import sys
 
-BUILD = os.environ.get("GDSW_BUILD", os.path.join(os.path.dirname(__file__), "..", "build"))
+from testlib import BUILD, ENV, between, case, main, run
+
 LIB = os.path.join(BUILD, "pc_gdsw", "libpetscgdsw.so")
 ELASTICITY = os.path.join(BUILD, "pc_gdsw", "gdsw_elasticity")
 BAD_INPUT = os.path.join(BUILD, "tests", "gdsw_bad_input")
 EX56 = os.path.join(BUILD, "tests", "petsc_ksp_ksp_ex56")
 EX71 = os.path.join(BUILD, "tests", "petsc_ksp_ksp_ex71")
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_mpi_yield_when_idle="1")
-CASES = {}
-
-
-def case(f):
-    CASES[f.__name__] = f
-    return f
-
-
-def run(cmd, np=1, fail=False):
-    """Run cmd on np ranks; return its output. fail=True expects a nonzero exit status."""
-    full = ["mpiexec", "-n", str(np)] + [str(c) for c in cmd]
-    p = subprocess.run(full, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=500)
-    print("$", " ".join(full), "\n" + p.stdout[-3000:])
-    assert (p.returncode != 0) == fail, f"exit status {p.returncode}, expected {'failure' if fail else 'success'}"
-    return p.stdout
 
 
 def elasticity(*opts, np=1):
@@ -46,11 +28,6 @@ def elasticity(*opts, np=1):
     for r in rows:
         assert r["reason"].startswith("CONVERGED"), f"did not converge: {r['reason']}"
     return rows[-1] if len(rows) == 1 else rows
-
-
-def between(value, lo, hi, what):
-    print(f"{what}: {value} (expected {lo}..{hi})")
-    assert lo <= value <= hi, f"{what} = {value} is outside [{lo}, {hi}]"
 
 
 # ---- coarse space: exact dimensions and components ------------------------------------------
@@ -293,8 +270,4 @@ def empty_subdomain():
 
 
 if __name__ == "__main__":
-    if sys.argv[1:] == ["--list"]:
-        print("\n".join(f"gdsw.{n}" for n in CASES))
-        sys.exit(0)
-    CASES[sys.argv[1].removeprefix("gdsw.")]()
-    print("PASS")
+    main("gdsw")

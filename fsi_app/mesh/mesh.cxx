@@ -1,0 +1,149 @@
+#include "mesh.h"
+#include <petscsf.h>
+#include <metis.h>
+#include <fstream>
+
+namespace fsi {
+
+/* A readable gmsh file, checked on rank 0 so that a bad path is one clear error, not a parser's. */
+static PetscErrorCode CheckFile(MPI_Comm comm, const std::string &file)
+{
+  PetscMPIInt rank;
+  int         status = 0; /* 0 ok, 1 missing, 2 not gmsh */
+  std::string first;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (!rank) {
+    std::ifstream in(file);
+    if (!in) status = 1;
+    else if (!std::getline(in, first) || first.rfind("$MeshFormat", 0) != 0) status = 2;
+  }
+  PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, comm));
+  PetscCheck(status != 1, comm, PETSC_ERR_FILE_OPEN, "mesh file '%s' does not exist or cannot be read (option -mesh); scripts/make-meshes makes the tube, cube and cylinder meshes", file.c_str());
+  PetscCheck(status != 2, comm, PETSC_ERR_FILE_UNEXPECTED, "mesh file '%s' is not a gmsh .msh file: it must start with $MeshFormat", file.c_str());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CountLabel(DM dm, const std::string &name, PetscInt depth, PetscInt *count)
+{
+  DMLabel  label;
+  PetscInt local = 0, pStart, pEnd;
+  IS       values;
+
+  PetscFunctionBegin;
+  *count = 0;
+  PetscCall(DMGetLabel(dm, name.c_str(), &label));
+  if (label) {
+    const PetscInt *v;
+    PetscInt        nv;
+    PetscSF         sf;
+    const PetscInt *leaves = nullptr;
+    PetscInt        nleaves = 0;
+    PetscCall(DMPlexGetDepthStratum(dm, depth, &pStart, &pEnd));
+    PetscCall(DMGetPointSF(dm, &sf));
+    if (sf) PetscCall(PetscSFGetGraph(sf, nullptr, &nleaves, &leaves, nullptr));
+    std::vector<char> ghost(pEnd > pStart ? pEnd - pStart : 0, 0);
+    for (PetscInt l = 0; l < nleaves && leaves; l++)
+      if (leaves[l] >= pStart && leaves[l] < pEnd) ghost[leaves[l] - pStart] = 1;
+    PetscCall(DMLabelGetValueIS(label, &values));
+    PetscCall(ISGetLocalSize(values, &nv));
+    PetscCall(ISGetIndices(values, &v));
+    for (PetscInt k = 0; k < nv; k++) {
+      IS              pts;
+      PetscInt        np;
+      const PetscInt *p;
+      PetscCall(DMLabelGetStratumIS(label, v[k], &pts));
+      if (!pts) continue;
+      PetscCall(ISGetLocalSize(pts, &np));
+      PetscCall(ISGetIndices(pts, &p));
+      for (PetscInt q = 0; q < np; q++) local += p[q] >= pStart && p[q] < pEnd && !ghost[p[q] - pStart];
+      PetscCall(ISRestoreIndices(pts, &p));
+      PetscCall(ISDestroy(&pts));
+    }
+    PetscCall(ISRestoreIndices(values, &v));
+    PetscCall(ISDestroy(&values));
+  }
+  PetscCallMPI(MPIU_Allreduce(&local, count, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)dm)));
+  PetscFunctionReturn(0);
+}
+
+/* The names of the labels that came from physical groups (for error messages). */
+static std::string GroupNames(DM dm)
+{
+  PetscInt    n;
+  std::string names;
+  DMGetNumLabels(dm, &n);
+  for (PetscInt i = 0; i < n; i++) {
+    const char *name;
+    DMGetLabelName(dm, i, &name);
+    const std::string s(name);
+    if (s == "depth" || s == "celltype") continue;
+    names += (names.empty() ? "" : ", ") + s;
+  }
+  return names.empty() ? "none" : names;
+}
+
+/* Cells to ranks: METIS k-way on the dual graph (cells sharing a face), computed where the
+   serial mesh lives, handed to DMPlexDistribute through a shell partitioner. */
+static PetscErrorCode DistributeWithMetis(DM *dm)
+{
+  PetscMPIInt      size, rank;
+  PetscInt         nv, *offsets, *adjacency;
+  IS               globalNumbering;
+  PetscPartitioner part;
+  DM               dist = nullptr;
+  MPI_Comm         comm = PetscObjectComm((PetscObject)*dm);
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (size == 1) PetscFunctionReturn(0);
+  PetscCall(DMPlexCreatePartitionerGraph(*dm, 0, &nv, &offsets, &adjacency, &globalNumbering));
+  std::vector<PetscInt> sizes(size, 0), points;
+  if (nv) {
+    std::vector<idx_t> xadj(offsets, offsets + nv + 1), adj(adjacency, adjacency + offsets[nv]), p(nv);
+    idx_t n = (idx_t)nv, ncon = 1, np = size, cut, options[METIS_NOPTIONS];
+    METIS_SetDefaultOptions(options);
+    options[METIS_OPTION_SEED] = 7;
+    const int status = METIS_PartGraphKway(&n, &ncon, xadj.data(), adj.data(), nullptr, nullptr, nullptr, &np, nullptr, nullptr, options, &cut, p.data());
+    PetscCheck(status == METIS_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "METIS could not partition the %" PetscInt_FMT " cells of the mesh into %d parts (status %d)", nv, size, status);
+    std::vector<std::vector<PetscInt>> byRank(size);
+    for (PetscInt c = 0; c < nv; c++) byRank[p[c]].push_back(c);
+    for (PetscMPIInt r = 0; r < size; r++) sizes[r] = (PetscInt)byRank[r].size(), points.insert(points.end(), byRank[r].begin(), byRank[r].end());
+  }
+  PetscCall(PetscFree(offsets));
+  PetscCall(PetscFree(adjacency));
+  PetscCall(ISDestroy(&globalNumbering));
+  PetscCall(DMPlexGetPartitioner(*dm, &part));
+  PetscCall(PetscPartitionerSetType(part, PETSCPARTITIONERSHELL));
+  PetscCall(PetscPartitionerShellSetPartition(part, size, sizes.data(), points.empty() ? nullptr : points.data()));
+  PetscCall(DMPlexDistribute(*dm, 0, nullptr, &dist));
+  if (dist) {
+    PetscCall(DMDestroy(dm));
+    *dm = dist;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vector<std::string> &required, DM *dm)
+{
+  PetscBool set;
+
+  PetscFunctionBegin;
+  PetscCall(CheckFile(comm, file));
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-dm_plex_gmsh_use_regions", &set));
+  if (!set) PetscCall(PetscOptionsSetValue(nullptr, "-dm_plex_gmsh_use_regions", "true")); /* labels named by physical groups */
+  PetscCall(DMPlexCreateGmshFromFile(comm, file.c_str(), PETSC_TRUE, dm));
+  PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));
+  for (const auto &g : required) {
+    PetscInt n3, n2;
+    PetscCall(CountLabel(*dm, g, 3, &n3));
+    PetscCall(CountLabel(*dm, g, 2, &n2));
+    PetscCheck(n3 + n2 > 0, comm, PETSC_ERR_ARG_WRONG, "mesh file '%s' has no physical group '%s', which this scene needs (the file has: %s)", file.c_str(), g.c_str(), GroupNames(*dm).c_str());
+  }
+  PetscCall(DistributeWithMetis(dm));
+  PetscFunctionReturn(0);
+}
+
+} // namespace fsi

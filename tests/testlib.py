@@ -1,0 +1,37 @@
+"""Shared helpers of the ctest case files: run a program under mpiexec, assert bounds."""
+import os
+import subprocess
+import sys
+
+BUILD = os.environ.get("GDSW_BUILD", os.path.join(os.path.dirname(__file__), "..", "build"))
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_mpi_yield_when_idle="1")
+CASES = {}
+
+
+def case(f):
+    CASES[f.__name__] = f
+    return f
+
+
+def run(cmd, np=1, fail=False):
+    """Run cmd on np ranks; return its output. fail=True expects a nonzero exit status."""
+    full = ["mpiexec", "-n", str(np)] + [str(c) for c in cmd]
+    p = subprocess.run(full, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=500)
+    print("$", " ".join(full), "\n" + p.stdout[-3000:])
+    assert (p.returncode != 0) == fail, f"exit status {p.returncode}, expected {'failure' if fail else 'success'}"
+    return p.stdout
+
+
+def between(value, lo, hi, what):
+    print(f"{what}: {value} (expected {lo}..{hi})")
+    assert lo <= value <= hi, f"{what} = {value} is outside [{lo}, {hi}]"
+
+
+def main(prefix):
+    """`FILE --list` names the cases as PREFIX.name; `FILE NAME` runs one (exit status 0 = pass)."""
+    if sys.argv[1:] == ["--list"]:
+        print("\n".join(f"{prefix}.{n}" for n in CASES))
+        sys.exit(0)
+    CASES[sys.argv[1].removeprefix(prefix + ".")]()
+    print("PASS")
