@@ -1,0 +1,103 @@
+#include "p2tet.h"
+#include <petscdt.h>
+
+namespace fsi {
+
+const int EdgeVertex[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+
+PetscErrorCode CreateP2Rule(PetscInt degree, P2Rule &rule)
+{
+  PetscQuadrature  q;
+  PetscInt         dim, nc, nq;
+  const PetscReal *pts, *wts;
+
+  PetscFunctionBegin;
+  PetscCall(PetscDTSimplexQuadrature(3, degree, PETSCDTSIMPLEXQUAD_DEFAULT, &q));
+  PetscCall(PetscQuadratureGetData(q, &dim, &nc, &nq, &pts, &wts));
+  rule.nq = nq;
+  rule.w.resize(nq), rule.lambda.resize(4 * nq), rule.N.resize(10 * nq);
+  for (PetscInt p = 0; p < nq; p++) {
+    PetscReal *l = &rule.lambda[4 * p], *N = &rule.N[10 * p];
+    for (int d = 0; d < 3; d++) l[d + 1] = (pts[3 * p + d] + 1) / 2; /* reference simplex [-1,1]^3 corner */
+    l[0]      = 1 - l[1] - l[2] - l[3];
+    rule.w[p] = wts[p] / 8; /* the [-1,1] simplex has volume 4/3, ours 1/6 */
+    for (int a = 0; a < 4; a++) N[a] = l[a] * (2 * l[a] - 1);
+    for (int e = 0; e < 6; e++) N[4 + e] = 4 * l[EdgeVertex[e][0]] * l[EdgeVertex[e][1]];
+  }
+  PetscCall(PetscQuadratureDestroy(&q));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CellP2(DM dm, PetscSection section, PetscInt cell, CellGeometry &g, PetscInt nodeOffset[10])
+{
+  PetscInt    *closure = nullptr, nclosure, vStart, vEnd, eStart, eEnd, nv = 0, off = 0;
+  PetscInt     vertex[4], edgeOffset[6], edgeCone[6][2], ne = 0;
+  Vec          coords;
+  PetscSection csec;
+  DM           cdm;
+  const PetscScalar *xa;
+
+  PetscFunctionBegin;
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(DMPlexGetDepthStratum(dm, 1, &eStart, &eEnd));
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMGetCoordinateDM(dm, &cdm));
+  PetscCall(DMGetLocalSection(cdm, &csec));
+  PetscCall(VecGetArrayRead(coords, &xa));
+  PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &nclosure, &closure));
+  for (PetscInt k = 0; k < nclosure; k++) {
+    const PetscInt p = closure[2 * k];
+    PetscInt       dof;
+    PetscCall(PetscSectionGetDof(section, p, &dof));
+    if (p >= vStart && p < vEnd) {
+      PetscInt coff;
+      PetscCall(PetscSectionGetOffset(csec, p, &coff));
+      for (int d = 0; d < 3; d++) g.x[nv][d] = PetscRealPart(xa[coff + d]);
+      vertex[nv]       = p;
+      nodeOffset[nv++] = off;
+    } else if (p >= eStart && p < eEnd) {
+      const PetscInt *cone;
+      PetscCall(DMPlexGetCone(dm, p, &cone));
+      edgeCone[ne][0] = cone[0], edgeCone[ne][1] = cone[1];
+      edgeOffset[ne++] = off;
+    }
+    off += dof;
+  }
+  PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &nclosure, &closure));
+  PetscCall(VecRestoreArrayRead(coords, &xa));
+  PetscCheck(nv == 4 && ne == 6, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "cell %" PetscInt_FMT " is not a tetrahedron (%" PetscInt_FMT " vertices, %" PetscInt_FMT " edges)", cell, nv, ne);
+  for (int e = 0; e < 6; e++) { /* our edge (a, b) is the closure edge whose cone is {vertex[a], vertex[b]} */
+    const PetscInt a = vertex[EdgeVertex[e][0]], b = vertex[EdgeVertex[e][1]];
+    nodeOffset[4 + e] = -1;
+    for (int f = 0; f < 6; f++)
+      if ((edgeCone[f][0] == a && edgeCone[f][1] == b) || (edgeCone[f][0] == b && edgeCone[f][1] == a)) nodeOffset[4 + e] = edgeOffset[f];
+  }
+  /* barycentric gradients: rows of E^{-1}, E = [x1 - x0, x2 - x0, x3 - x0] */
+  PetscReal E[3][3], inv[3][3];
+  for (int r = 0; r < 3; r++)
+    for (int c = 0; c < 3; c++) E[r][c] = g.x[c + 1][r] - g.x[0][r];
+  const PetscReal det = E[0][0] * (E[1][1] * E[2][2] - E[1][2] * E[2][1]) - E[0][1] * (E[1][0] * E[2][2] - E[1][2] * E[2][0]) + E[0][2] * (E[1][0] * E[2][1] - E[1][1] * E[2][0]);
+  PetscCheck(det != 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "cell %" PetscInt_FMT " is degenerate (zero volume)", cell);
+  inv[0][0] = (E[1][1] * E[2][2] - E[1][2] * E[2][1]) / det, inv[0][1] = (E[0][2] * E[2][1] - E[0][1] * E[2][2]) / det, inv[0][2] = (E[0][1] * E[1][2] - E[0][2] * E[1][1]) / det;
+  inv[1][0] = (E[1][2] * E[2][0] - E[1][0] * E[2][2]) / det, inv[1][1] = (E[0][0] * E[2][2] - E[0][2] * E[2][0]) / det, inv[1][2] = (E[0][2] * E[1][0] - E[0][0] * E[1][2]) / det;
+  inv[2][0] = (E[1][0] * E[2][1] - E[1][1] * E[2][0]) / det, inv[2][1] = (E[0][1] * E[2][0] - E[0][0] * E[2][1]) / det, inv[2][2] = (E[0][0] * E[1][1] - E[0][1] * E[1][0]) / det;
+  for (int d = 0; d < 3; d++) {
+    g.gradLambda[0][d] = 0;
+    for (int k = 1; k < 4; k++) g.gradLambda[k][d] = inv[k - 1][d], g.gradLambda[0][d] -= inv[k - 1][d];
+  }
+  g.detE = PetscAbsReal(det);
+  PetscFunctionReturn(0);
+}
+
+void P2Gradients(const CellGeometry &g, const PetscReal l[4], PetscReal dN[10][3])
+{
+  for (int d = 0; d < 3; d++) {
+    for (int a = 0; a < 4; a++) dN[a][d] = (4 * l[a] - 1) * g.gradLambda[a][d];
+    for (int e = 0; e < 6; e++) {
+      const int i = EdgeVertex[e][0], j = EdgeVertex[e][1];
+      dN[4 + e][d] = 4 * (l[i] * g.gradLambda[j][d] + l[j] * g.gradLambda[i][d]);
+    }
+  }
+}
+
+} // namespace fsi

@@ -1,0 +1,182 @@
+static const char help[] = "fsi_app: monolithic fluid-structure interaction on PETSc (so far: the structure block,\n"
+                           "linear elastic statics, and its verification). Scenes are options files: -options_file scenes/X.opts\n";
+
+#include "discretization/fields.h"
+#include "mesh/mesh.h"
+#include "solver/subdomains.h"
+#include "structure/assembly.h"
+#include "verification/mms.h"
+#include <petscgdsw.h>
+#include <petscsnes.h>
+
+using namespace fsi;
+
+struct Scene {
+  char      mesh[PETSC_MAX_PATH_LEN] = "meshes/cube_L0.msh";
+  PetscInt  refine                   = 0;
+  char      region[64]               = "";   /* group of the structure's cells ("" all) */
+  char      clamp[256]               = "";   /* groups with d = 0 */
+  PetscBool mms                      = PETSC_FALSE;
+  Material  material                 = LINEAR_ELASTIC;
+  PetscReal E = 1.0, nu = 0.3;
+  PetscInt  degree = 2, subdomains = 1;
+};
+
+static std::vector<std::string> Split(const char *s)
+{
+  std::vector<std::string> out;
+  for (std::string r = s; !r.empty();) {
+    const size_t k = r.find(',');
+    out.push_back(r.substr(0, k));
+    r = k == std::string::npos ? "" : r.substr(k + 1);
+  }
+  return out;
+}
+
+static PetscErrorCode ReadScene(Scene &sc)
+{
+  PetscFunctionBegin;
+  PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "fsi_app scene", nullptr);
+  PetscCall(PetscOptionsString("-mesh", "gmsh mesh file", nullptr, sc.mesh, sc.mesh, sizeof(sc.mesh), nullptr));
+  PetscCall(PetscOptionsInt("-refine", "uniform refinements of the mesh after distribution", nullptr, sc.refine, &sc.refine, nullptr));
+  PetscCall(PetscOptionsString("-structure_region", "physical group of the wall's cells (empty: every cell)", nullptr, sc.region, sc.region, sizeof(sc.region), nullptr));
+  PetscCall(PetscOptionsString("-structure_clamp", "groups of faces where the displacement is zero (comma separated)", nullptr, sc.clamp, sc.clamp, sizeof(sc.clamp), nullptr));
+  PetscCall(PetscOptionsBool("-mms", "manufactured solution d = sin(pi x)sin(pi y)sin(pi z)(1,1,1) on the unit cube", nullptr, sc.mms, &sc.mms, nullptr));
+  PetscCall(PetscOptionsEnum("-material", "constitutive law of the wall", nullptr, MaterialNames, (PetscEnum)sc.material, (PetscEnum *)&sc.material, nullptr));
+  PetscCall(PetscOptionsReal("-E", "Young's modulus (linear elastic)", nullptr, sc.E, &sc.E, nullptr));
+  PetscCall(PetscOptionsReal("-nu", "Poisson ratio (linear elastic)", nullptr, sc.nu, &sc.nu, nullptr));
+  PetscCall(PetscOptionsInt("-structure_degree", "polynomial degree of the displacement", nullptr, sc.degree, &sc.degree, nullptr));
+  PetscCall(PetscOptionsInt("-structure_subdomains", "GDSW subdomains per rank (METIS on the rank's cells)", nullptr, sc.subdomains, &sc.subdomains, nullptr));
+  PetscOptionsEnd();
+  PetscCheck(sc.E > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-E %g: Young's modulus must be positive", (double)sc.E);
+  PetscCheck(sc.nu > -1 && sc.nu < 0.5, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-nu %g: the Poisson ratio must lie in (-1, 0.5)", (double)sc.nu);
+  PetscCheck(sc.degree >= 1 && sc.degree <= 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_degree %" PetscInt_FMT ": use 1, 2 or 3", sc.degree);
+  PetscCheck(sc.subdomains >= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_subdomains %" PetscInt_FMT ": at least 1", sc.subdomains);
+  PetscFunctionReturn(0);
+}
+
+/* The mesh, refined; a label "boundary" on its boundary faces for the manufactured solution. */
+static PetscErrorCode CreateMesh(const Scene &sc, DM *dm)
+{
+  std::vector<std::string> required = Split(sc.clamp);
+  if (sc.region[0]) required.push_back(sc.region);
+
+  PetscFunctionBegin;
+  PetscCall(LoadMesh(PETSC_COMM_WORLD, sc.mesh, required, dm));
+  for (PetscInt k = 0; k < sc.refine; k++) {
+    DM fine;
+    PetscCall(DMRefine(*dm, PETSC_COMM_WORLD, &fine));
+    PetscCall(DMDestroy(dm));
+    *dm = fine;
+  }
+  PetscCall(DMCreateLabel(*dm, "boundary"));
+  DMLabel boundary;
+  PetscCall(DMGetLabel(*dm, "boundary", &boundary));
+  PetscCall(DMPlexMarkBoundaryFaces(*dm, 1, boundary));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode ZeroDisplacement(PetscInt, PetscReal, const PetscReal[], PetscInt nc, PetscScalar *u, void *)
+{
+  for (PetscInt c = 0; c < nc; c++) u[c] = 0;
+  return 0;
+}
+
+/* The structure block: displacement field on its region, material, body force, Dirichlet
+   conditions (clamped groups, or the exact solution on the whole boundary). */
+static PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb, PetscInt *field)
+{
+  DMLabel        label;
+  const PetscInt one = 1;
+
+  PetscFunctionBegin;
+  PetscCall(AddLagrangeField(dm, "displacement", sc.region, 3, sc.degree, field));
+  PetscCall(DMCreateDS(dm));
+  PetscCheck(sc.degree == 2, PETSC_COMM_WORLD, PETSC_ERR_SUP, "-structure_degree %" PetscInt_FMT ": the element loops are P2 (use 2)", sc.degree);
+  PetscCall(GetMaterialLaw(sc.material, &sb.law));
+  sb.param[0] = sc.E / (2 * (1 + sc.nu));
+  sb.param[1] = sc.E * sc.nu / ((1 + sc.nu) * (1 - 2 * sc.nu));
+  sb.mms      = sc.mms;
+  if (sc.region[0]) PetscCall(DMGetLabel(dm, (std::string("region_") + sc.region).c_str(), &sb.region));
+  PetscCall(CreateP2Rule(sc.mms ? 5 : 2, sb.rule)); /* stiffness of affine P2: degree 2; the trigonometric load needs more */
+  if (sc.mms) {
+    PetscCall(DMGetLabel(dm, "boundary", &label));
+    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, "boundary", label, 1, &one, *field, 0, nullptr, (void (*)(void))MMSElasticityExact, nullptr, nullptr, nullptr));
+  }
+  for (const auto &g : Split(sc.clamp)) {
+    DMLabel         group;
+    IS              values;
+    PetscInt        nv;
+    const PetscInt *v;
+    PetscCall(DMGetLabel(dm, g.c_str(), &group));
+    PetscCall(DMLabelGetValueIS(group, &values));
+    PetscCall(ISGetLocalSize(values, &nv));
+    PetscCall(ISGetIndices(values, &v));
+    std::vector<PetscInt> ids(v, v + nv);
+    PetscCall(ISRestoreIndices(values, &v));
+    PetscCall(ISDestroy(&values));
+    PetscInt any = nv, gany;
+    PetscCallMPI(MPIU_Allreduce(&any, &gany, 1, MPIU_INT, MPI_MAX, PETSC_COMM_WORLD));
+    if (ids.empty() && gany) ids.push_back(0); /* the label's value lives on other ranks */
+    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, g.c_str(), group, (PetscInt)ids.size(), ids.data(), *field, 0, nullptr, (void (*)(void))ZeroDisplacement, nullptr, nullptr, nullptr));
+  }
+  PetscCall(DMSNESSetFunctionLocal(dm, StructureResidual, &sb));
+  PetscCall(DMSNESSetJacobianLocal(dm, StructureJacobian, &sb));
+  PetscFunctionReturn(0);
+}
+
+int main(int argc, char **argv)
+{
+  Scene          sc;
+  StructureBlock sb;
+  DM             dm;
+  SNES     snes;
+  Vec      d;
+  Mat      J;
+  PetscInt field, N;
+
+  PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
+  PetscCall(PCGDSWRegister());
+  PetscCall(ReadScene(sc));
+  PetscCall(CreateMesh(sc, &dm));
+  PetscCall(SetUpStructure(sc, dm, sb, &field));
+  PetscCall(DMCreateGlobalVector(dm, &d));
+  PetscCall(PetscObjectSetName((PetscObject)d, "displacement"));
+  PetscCall(VecGetSize(d, &N));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "unknowns: structure %" PetscInt_FMT " fluid 0 pressure 0 geometry 0 multiplier 0\n", N));
+
+  PetscCall(SNESCreate(PETSC_COMM_WORLD, &snes));
+  PetscCall(SNESSetDM(snes, dm));
+  PetscCall(DMCreateMatrix(dm, &J));
+  PetscCall(SNESSetJacobian(snes, J, J, nullptr, nullptr));
+  PetscCall(SNESSetFromOptions(snes));
+  KSP ksp;
+  PC  pc;
+  PetscCall(SNESGetKSP(snes, &ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(SetGDSWSubdomains(pc, dm, J, sc.region, field, sc.subdomains));
+
+  PetscCall(VecSet(d, 0.0));
+  PetscLogDouble t0, t1;
+  PetscCall(PetscTime(&t0));
+  PetscCall(SNESSolve(snes, nullptr, d));
+  PetscCall(PetscTime(&t1));
+  PetscInt            newton, krylov;
+  SNESConvergedReason reason;
+  PetscCall(SNESGetIterationNumber(snes, &newton));
+  PetscCall(SNESGetLinearSolveIterations(snes, &krylov));
+  PetscCall(SNESGetConvergedReason(snes, &reason));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "newton %" PetscInt_FMT " krylov %" PetscInt_FMT " reason %s time %.3f s\n", newton, krylov, SNESConvergedReasons[reason], t1 - t0));
+  if (sc.mms) {
+    PetscErrorCode (*exact[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {MMSElasticityExact}; /* PetscFE quadrature of the field */
+    PetscReal err;
+    PetscCall(DMComputeL2Diff(dm, 0.0, exact, nullptr, d, &err));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "L2 error %.6e\n", (double)err));
+  }
+  PetscCall(MatDestroy(&J));
+  PetscCall(VecDestroy(&d));
+  PetscCall(SNESDestroy(&snes));
+  PetscCall(DMDestroy(&dm));
+  PetscCall(PetscFinalize());
+  return 0;
+}

@@ -1,0 +1,130 @@
+#include "assembly.h"
+#include "verification/mms.h"
+
+namespace fsi {
+
+/* Every cell of the block with its geometry, node offsets and the closure values of X. */
+template <class Body>
+static PetscErrorCode ForEachCell(DM dm, Vec X, const StructureBlock &sb, Body body)
+{
+  PetscSection section;
+  PetscInt     cStart, cEnd;
+
+  PetscFunctionBegin;
+  PetscCall(DMGetLocalSection(dm, &section));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  for (PetscInt c = cStart; c < cEnd; c++) {
+    if (sb.region) {
+      PetscInt v;
+      PetscCall(DMLabelGetValue(sb.region, c, &v));
+      if (v != 1) continue;
+    }
+    CellGeometry g;
+    PetscInt     off[10], n = 0;
+    PetscScalar *x = nullptr;
+    PetscCall(CellP2(dm, section, c, g, off));
+    PetscCall(DMPlexVecGetClosure(dm, section, X, c, &n, &x));
+    PetscCall(body(c, g, off, x, n));
+    PetscCall(DMPlexVecRestoreClosure(dm, section, X, c, &n, &x));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* F = I + grad d at a point, from the nodal displacements. */
+static void DeformationGradient(const PetscScalar *x, const PetscInt off[10], const PetscReal dN[10][3], PetscReal F[9])
+{
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) F[i * 3 + j] = (i == j);
+  for (int a = 0; a < 10; a++)
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++) F[i * 3 + j] += PetscRealPart(x[off[a] + i]) * dN[a][j];
+}
+
+static PetscReal PointOf(const CellGeometry &g, const PetscReal l[4], int d)
+{
+  return l[0] * g.x[0][d] + l[1] * g.x[1][d] + l[2] * g.x[2][d] + l[3] * g.x[3][d];
+}
+
+PetscErrorCode StructureResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
+{
+  const StructureBlock &sb = *(StructureBlock *)ctx;
+  PetscSection          section;
+
+  PetscFunctionBegin;
+  PetscCall(DMPlexInsertBoundaryValues(dm, PETSC_TRUE, Xl, 0.0, nullptr, nullptr, nullptr));
+  PetscCall(DMGetLocalSection(dm, &section));
+  PetscCall(VecZeroEntries(Fl));
+  PetscCall(ForEachCell(dm, Xl, sb, [&](PetscInt c, const CellGeometry &g, const PetscInt off[10], const PetscScalar *x, PetscInt n) -> PetscErrorCode {
+    std::vector<PetscScalar> r(n, 0.0);
+    PetscFunctionBegin;
+    for (PetscInt q = 0; q < sb.rule.nq; q++) {
+      const PetscReal *l = &sb.rule.lambda[4 * q], *N = &sb.rule.N[10 * q], wq = sb.rule.w[q] * g.detE;
+      PetscReal        dN[10][3], F[9], P[9], b[3] = {0, 0, 0};
+      P2Gradients(g, l, dN);
+      DeformationGradient(x, off, dN, F);
+      sb.law.stress(F, sb.param, P);
+      if (sb.mms) {
+        const PetscReal xq[3] = {PointOf(g, l, 0), PointOf(g, l, 1), PointOf(g, l, 2)};
+        MMSElasticityDivStress(xq, sb.param[0], sb.param[1], b); /* body force -div sigma */
+        for (int i = 0; i < 3; i++) b[i] = -b[i];
+      }
+      for (int a = 0; a < 10; a++)
+        for (int i = 0; i < 3; i++) {
+          PetscReal v = -b[i] * N[a];
+          for (int j = 0; j < 3; j++) v += P[i * 3 + j] * dN[a][j];
+          r[off[a] + i] += wq * v;
+        }
+    }
+    PetscCall(DMPlexVecSetClosure(dm, section, Fl, c, r.data(), ADD_ALL_VALUES));
+    PetscFunctionReturn(0);
+  }));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode StructureJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
+{
+  const StructureBlock &sb = *(StructureBlock *)ctx;
+  PetscSection          section, global;
+
+  PetscFunctionBegin;
+  PetscCall(DMPlexInsertBoundaryValues(dm, PETSC_TRUE, Xl, 0.0, nullptr, nullptr, nullptr));
+  PetscCall(DMGetLocalSection(dm, &section));
+  PetscCall(DMGetGlobalSection(dm, &global));
+  PetscCall(MatZeroEntries(P));
+  PetscCall(ForEachCell(dm, Xl, sb, [&](PetscInt c, const CellGeometry &g, const PetscInt off[10], const PetscScalar *x, PetscInt n) -> PetscErrorCode {
+    std::vector<PetscScalar> K(n * n, 0.0);
+    PetscFunctionBegin;
+    for (PetscInt q = 0; q < sb.rule.nq; q++) {
+      const PetscReal *l = &sb.rule.lambda[4 * q], wq = sb.rule.w[q] * g.detE;
+      PetscReal        dN[10][3], F[9], A[81], G[10][3][9];
+      P2Gradients(g, l, dN);
+      DeformationGradient(x, off, dN, F);
+      sb.law.tangent(F, sb.param, A);
+      /* G[a][i][k*3+l] = sum_j dN_a,j A_ijkl: then K_(ai)(bk) = sum_l G[a][i][kl] dN_b,l */
+      for (int a = 0; a < 10; a++)
+        for (int i = 0; i < 3; i++)
+          for (int kl = 0; kl < 9; kl++) {
+            PetscReal s = 0;
+            for (int j = 0; j < 3; j++) s += dN[a][j] * A[(i * 3 + j) * 9 + kl];
+            G[a][i][kl] = wq * s;
+          }
+      for (int a = 0; a < 10; a++)
+        for (int i = 0; i < 3; i++) {
+          PetscScalar *row = &K[(off[a] + i) * n];
+          for (int b = 0; b < 10; b++)
+            for (int k = 0; k < 3; k++) row[off[b] + k] += G[a][i][k * 3] * dN[b][0] + G[a][i][k * 3 + 1] * dN[b][1] + G[a][i][k * 3 + 2] * dN[b][2];
+        }
+    }
+    PetscCall(DMPlexMatSetClosure(dm, section, global, P, c, K.data(), ADD_VALUES));
+    PetscFunctionReturn(0);
+  }));
+  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+  if (J != P) {
+    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace fsi

@@ -1,0 +1,22 @@
+/* The structure block's residual and Jacobian, assembled cell by cell with the P2 element of
+   discretization/p2tet.h: R(d) = int P(F) : grad v - int b . v. */
+#pragma once
+
+#include "discretization/p2tet.h"
+#include "structure/materials.h"
+
+namespace fsi {
+
+struct StructureBlock {
+  MaterialLaw law;
+  PetscReal   param[2];              /* the law's parameters (linear: mu, lambda) */
+  PetscBool   mms = PETSC_FALSE;     /* body force of the manufactured solution */
+  DMLabel     region = nullptr;      /* cells of the wall (value 1), or all cells */
+  P2Rule      rule;
+};
+
+/* DMSNES local callbacks (the context is the StructureBlock). */
+PetscErrorCode StructureResidual(DM dm, Vec X, Vec F, void *ctx);
+PetscErrorCode StructureJacobian(DM dm, Vec X, Mat J, Mat P, void *ctx);
+
+} // namespace fsi

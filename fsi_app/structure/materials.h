@@ -1,0 +1,20 @@
+/* Constitutive laws of the wall: the first Piola-Kirchhoff stress P(F) and its exact
+   derivative A = dP/dF (A[((i*3 + j)*3 + k)*3 + l] = dP_ij/dF_kl), F = I + grad d. */
+#pragma once
+
+#include <petscsys.h>
+
+namespace fsi {
+
+enum Material { LINEAR_ELASTIC = 0, NEO_HOOKE = 1, ARTERIAL = 2 };
+extern const char *const MaterialNames[];
+
+struct MaterialLaw {
+  void (*stress)(const PetscReal F[9], const PetscReal *param, PetscReal P[9]);
+  void (*tangent)(const PetscReal F[9], const PetscReal *param, PetscReal A[81]);
+};
+
+/* param of the linear elastic law: {mu, lambda} */
+PetscErrorCode GetMaterialLaw(Material m, MaterialLaw *law);
+
+} // namespace fsi
