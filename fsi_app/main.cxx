@@ -17,6 +17,8 @@ struct Scene {
   char      region[64]               = "";   /* group of the structure's cells ("" all) */
   char      clamp[256]               = "";   /* groups with d = 0 */
   PetscBool mms                      = PETSC_FALSE;
+  PetscReal pressure                 = 0;    /* dead pressure on the faces of group `loaded` */
+  char      loaded[64]               = "interface";
   Material  material                 = LINEAR_ELASTIC;
   PetscReal E = 1.0, nu = 0.3;
   PetscInt  degree = 2, subdomains = 1;
@@ -41,6 +43,8 @@ static PetscErrorCode ReadScene(Scene &sc)
   PetscCall(PetscOptionsInt("-refine", "uniform refinements of the mesh after distribution", nullptr, sc.refine, &sc.refine, nullptr));
   PetscCall(PetscOptionsString("-structure_region", "physical group of the wall's cells (empty: every cell)", nullptr, sc.region, sc.region, sizeof(sc.region), nullptr));
   PetscCall(PetscOptionsString("-structure_clamp", "groups of faces where the displacement is zero (comma separated)", nullptr, sc.clamp, sc.clamp, sizeof(sc.clamp), nullptr));
+  PetscCall(PetscOptionsReal("-structure_pressure", "pressure on the faces of -structure_pressure_group (dyn/cm^2)", nullptr, sc.pressure, &sc.pressure, nullptr));
+  PetscCall(PetscOptionsString("-structure_pressure_group", "group of faces the pressure acts on", nullptr, sc.loaded, sc.loaded, sizeof(sc.loaded), nullptr));
   PetscCall(PetscOptionsBool("-mms", "manufactured solution d = sin(pi x)sin(pi y)sin(pi z)(1,1,1) on the unit cube", nullptr, sc.mms, &sc.mms, nullptr));
   PetscCall(PetscOptionsEnum("-material", "constitutive law of the wall", nullptr, MaterialNames, (PetscEnum)sc.material, (PetscEnum *)&sc.material, nullptr));
   PetscCall(PetscOptionsReal("-E", "Young's modulus (linear elastic)", nullptr, sc.E, &sc.E, nullptr));
@@ -60,6 +64,7 @@ static PetscErrorCode CreateMesh(const Scene &sc, DM *dm)
 {
   std::vector<std::string> required = Split(sc.clamp);
   if (sc.region[0]) required.push_back(sc.region);
+  if (sc.pressure != 0) required.push_back(sc.loaded);
 
   PetscFunctionBegin;
   PetscCall(LoadMesh(PETSC_COMM_WORLD, sc.mesh, required, dm));
@@ -99,6 +104,9 @@ static PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb,
   sb.mms      = sc.mms;
   if (sc.region[0]) PetscCall(DMGetLabel(dm, (std::string("region_") + sc.region).c_str(), &sb.region));
   PetscCall(CreateP2Rule(sc.mms ? 5 : 2, sb.rule)); /* stiffness of affine P2: degree 2; the trigonometric load needs more */
+  PetscCall(CreateFaceRule(2, sb.faceRule));          /* P2 times a constant normal */
+  sb.pressure = sc.pressure;
+  if (sc.pressure != 0) PetscCall(DMGetLabel(dm, sc.loaded, &sb.loaded));
   if (sc.mms) {
     PetscCall(DMGetLabel(dm, "boundary", &label));
     PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, "boundary", label, 1, &one, *field, 0, nullptr, (void (*)(void))MMSElasticityExact, nullptr, nullptr, nullptr));
@@ -166,7 +174,9 @@ int main(int argc, char **argv)
   PetscCall(SNESGetIterationNumber(snes, &newton));
   PetscCall(SNESGetLinearSolveIterations(snes, &krylov));
   PetscCall(SNESGetConvergedReason(snes, &reason));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "newton %" PetscInt_FMT " krylov %" PetscInt_FMT " reason %s time %.3f s\n", newton, krylov, SNESConvergedReasons[reason], t1 - t0));
+  PetscReal dmax;
+  PetscCall(VecNorm(d, NORM_INFINITY, &dmax));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "newton %" PetscInt_FMT " krylov %" PetscInt_FMT " reason %s time %.3f s max displacement %.6e\n", newton, krylov, SNESConvergedReasons[reason], t1 - t0, (double)dmax));
   if (sc.mms) {
     PetscErrorCode (*exact[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {MMSElasticityExact}; /* PetscFE quadrature of the field */
     PetscReal err;

@@ -7,6 +7,9 @@ from testlib import BUILD, between, case, main, run
 
 MESHES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "meshes")
 MESH_INFO = os.path.join(BUILD, "fsi_app", "fsi_mesh_info")
+APP = os.path.join(BUILD, "fsi_app", "fsi_app")
+WALL = ["-structure_region", "wall", "-structure_clamp", "wall_inlet_ring,wall_outlet_ring", "-snes_type", "ksponly",
+        "-ksp_type", "cg", "-ksp_rtol", "1e-8"]
 TUBE_GROUPS = "fluid,wall,inlet,outlet,interface,wall_inlet_ring,wall_outlet_ring,outer_wall"
 
 
@@ -51,6 +54,65 @@ def mesh_errors():
         for np in (1, 2):
             out = run([MESH_INFO, "-mesh"] + args, np, fail=True)
             assert msg.format(args[0]) in out, msg
+
+
+def solve(*opts, np=1):
+    out = run([APP] + [str(o) for o in opts], np)
+    r = {"unknowns": dict(re.findall(r"(\w+) (\d+)", re.search(r"unknowns: (.*)", out).group(1)))}
+    m = re.search(r"newton (\d+) krylov (\d+) reason (\w+) time \S+ s max displacement (\S+)", out)
+    r.update(newton=int(m.group(1)), krylov=int(m.group(2)), reason=m.group(3), dmax=float(m.group(4)))
+    e = re.search(r"L2 error (\S+)", out)
+    r["l2"] = float(e.group(1)) if e else None
+    assert r["reason"].startswith("CONVERGED"), r
+    return r
+
+
+@case
+def structure_mms_rate():
+    """Linear elasticity, P2, manufactured solution on the unit cube refined twice: the L2 error
+    falls at rate 3 (asymptotically; the coarsest mesh has 101 cells)."""
+    e = [solve("-mesh", os.path.join(MESHES, "cube_L0.msh"), "-refine", k, "-mms", "-snes_type", "ksponly", "-ksp_type", "cg",
+               "-ksp_rtol", "1e-12", "-pc_type", "gdsw", "-structure_subdomains", 4)["l2"] for k in range(3)]
+    import math
+    rates = [math.log2(e[k] / e[k + 1]) for k in range(2)]
+    print("L2 errors", e, "rates", rates)
+    between(rates[1], 2.8, 3.3, "L2 rate, refinements 1 -> 2")
+    between(rates[0], 1.8, 3.3, "L2 rate, refinements 0 -> 1")
+    assert e[2] < 1e-3
+
+
+@case
+def structure_tube_wall():
+    """The wall of tube #1 alone under 1330 dyn/cm^2 inside, clamped at both rings: only
+    structure unknowns are allocated (12240 on this mesh, on 1 and 2 ranks); the radial
+    displacement matches the thin-wall estimate p R^2 (1 - nu^2) / (E h) within 10 %;
+    GDSW with the application's element subdomains needs far fewer CG iterations than the same
+    subdomains without a coarse level."""
+    mesh = os.path.join(MESHES, "tube1_L0.msh")
+    load = ["-mesh", mesh, "-structure_pressure", 1330, "-E", 4e5, "-nu", 0.3] + WALL
+    est = 1330 * 0.18**2 * (1 - 0.3**2) / (4e5 * 0.06)
+    its = {}
+    for np in (1, 2):
+        g = solve(*load, "-pc_type", "gdsw", "-structure_subdomains", 16 // np, np=np)
+        assert g["unknowns"] == {"structure": "12240", "fluid": "0", "pressure": "0", "geometry": "0", "multiplier": "0"}, g
+        between(g["dmax"] / est, 0.9, 1.1, "max displacement / thin-wall estimate")
+        its[np] = g["krylov"]
+    os1 = solve(*load, "-pc_type", "gdsw", "-structure_subdomains", 16, "-pc_gdsw_coarse_space", "none")["krylov"]
+    print("GDSW", its, "one-level", os1)
+    between(its[1], 15, 45, "GDSW CG iterations, 16 subdomains")
+    assert os1 >= 2 * its[1], (os1, its)
+
+
+@case
+def structure_bad_options():
+    mesh = os.path.join(MESHES, "tube1_L0.msh")
+    for opts, msg in ((["-nu", 0.5], "-nu 0.5: the Poisson ratio must lie in (-1, 0.5)"),
+                      (["-E", -1], "Young's modulus must be positive"),
+                      (["-material", "neohooke"], "-material neohooke is not implemented yet"),
+                      (["-structure_region", "lumen"], "has no physical group 'lumen', which this scene needs"),
+                      (["-structure_subdomains", 0], "-structure_subdomains 0: at least 1")):
+        out = run([APP, "-mesh", mesh] + WALL[2:] + [str(o) for o in opts], 1, fail=True)
+        assert msg in out, msg
 
 
 if __name__ == "__main__":

@@ -21,14 +21,39 @@ PetscErrorCode CreateP2Rule(PetscInt degree, P2Rule &rule)
     for (int d = 0; d < 3; d++) l[d + 1] = (pts[3 * p + d] + 1) / 2; /* reference simplex [-1,1]^3 corner */
     l[0]      = 1 - l[1] - l[2] - l[3];
     rule.w[p] = wts[p] / 8; /* the [-1,1] simplex has volume 4/3, ours 1/6 */
-    for (int a = 0; a < 4; a++) N[a] = l[a] * (2 * l[a] - 1);
-    for (int e = 0; e < 6; e++) N[4 + e] = 4 * l[EdgeVertex[e][0]] * l[EdgeVertex[e][1]];
+    P2Values(l, N);
   }
   PetscCall(PetscQuadratureDestroy(&q));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CellP2(DM dm, PetscSection section, PetscInt cell, CellGeometry &g, PetscInt nodeOffset[10])
+void P2Values(const PetscReal l[4], PetscReal N[10])
+{
+  for (int a = 0; a < 4; a++) N[a] = l[a] * (2 * l[a] - 1);
+  for (int e = 0; e < 6; e++) N[4 + e] = 4 * l[EdgeVertex[e][0]] * l[EdgeVertex[e][1]];
+}
+
+PetscErrorCode CreateFaceRule(PetscInt degree, FaceRule &rule)
+{
+  PetscQuadrature  q;
+  PetscInt         dim, nc, nq;
+  const PetscReal *pts, *wts;
+
+  PetscFunctionBegin;
+  PetscCall(PetscDTSimplexQuadrature(2, degree, PETSCDTSIMPLEXQUAD_DEFAULT, &q));
+  PetscCall(PetscQuadratureGetData(q, &dim, &nc, &nq, &pts, &wts));
+  rule.nq = nq;
+  rule.w.resize(nq), rule.mu.resize(3 * nq);
+  for (PetscInt p = 0; p < nq; p++) {
+    rule.mu[3 * p + 1] = (pts[2 * p] + 1) / 2, rule.mu[3 * p + 2] = (pts[2 * p + 1] + 1) / 2;
+    rule.mu[3 * p]     = 1 - rule.mu[3 * p + 1] - rule.mu[3 * p + 2];
+    rule.w[p]          = wts[p] / 4; /* the [-1,1] triangle has area 2, ours 1/2 */
+  }
+  PetscCall(PetscQuadratureDestroy(&q));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CellP2(DM dm, PetscSection section, PetscInt cell, CellGeometry &g, PetscInt nodeOffset[10], PetscInt *closureSize)
 {
   PetscInt    *closure = nullptr, nclosure, vStart, vEnd, eStart, eEnd, nv = 0, off = 0;
   PetscInt     vertex[4], edgeOffset[6], edgeCone[6][2], ne = 0;
@@ -65,6 +90,7 @@ PetscErrorCode CellP2(DM dm, PetscSection section, PetscInt cell, CellGeometry &
   }
   PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &nclosure, &closure));
   PetscCall(VecRestoreArrayRead(coords, &xa));
+  if (closureSize) *closureSize = off;
   PetscCheck(nv == 4 && ne == 6, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "cell %" PetscInt_FMT " is not a tetrahedron (%" PetscInt_FMT " vertices, %" PetscInt_FMT " edges)", cell, nv, ne);
   for (int e = 0; e < 6; e++) { /* our edge (a, b) is the closure edge whose cone is {vertex[a], vertex[b]} */
     const PetscInt a = vertex[EdgeVertex[e][0]], b = vertex[EdgeVertex[e][1]];

@@ -23,6 +23,16 @@ struct P2Rule {
 /* A rule exact for polynomials of `degree` (PETSc's simplex quadrature). */
 PetscErrorCode CreateP2Rule(PetscInt degree, P2Rule &rule);
 
+/* The same on a triangle: weights for area 1/2, 3 barycentric coordinates per point. */
+struct FaceRule {
+  PetscInt               nq = 0;
+  std::vector<PetscReal> w, mu;
+};
+PetscErrorCode CreateFaceRule(PetscInt degree, FaceRule &rule);
+
+/* Basis values at barycentric point l of the cell. */
+void P2Values(const PetscReal l[4], PetscReal N[10]);
+
 /* One cell: vertex coordinates, barycentric gradients, |det E| with E = [x1-x0, x2-x0, x3-x0]. */
 struct CellGeometry {
   PetscReal x[4][3];
@@ -32,8 +42,8 @@ struct CellGeometry {
 
 /* Geometry of `cell`, and for each of its 10 P2 nodes the offset of the node's first dof in
    the cell's closure array of `section` (DMPlexVecGetClosure / DMPlexGetClosureIndices order)
-   for a field with `nc` components that is the only field on these points. */
-PetscErrorCode CellP2(DM dm, PetscSection section, PetscInt cell, CellGeometry &g, PetscInt nodeOffset[10]);
+   for a vector field that is the only field on these points, and the closure size (or NULL). */
+PetscErrorCode CellP2(DM dm, PetscSection section, PetscInt cell, CellGeometry &g, PetscInt nodeOffset[10], PetscInt *closureSize);
 
 /* Physical basis gradients at one point: dN[a][d]. */
 void P2Gradients(const CellGeometry &g, const PetscReal lambda[4], PetscReal dN[10][3]);

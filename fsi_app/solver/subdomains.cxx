@@ -1,4 +1,5 @@
 #include "subdomains.h"
+#include "discretization/nodes.h"
 #include <petscgdsw.h>
 #include <metis.h>
 #include <algorithm>
@@ -47,7 +48,7 @@ PetscErrorCode SetGDSWSubdomains(PC pc, DM dm, Mat J, const char *region, PetscI
   MatNullSpace nsp;
 
   PetscFunctionBegin;
-  PetscCall(DMPlexCreateRigidBody(dm, field, &nsp)); /* consistent with the section: constrained dofs removed */
+  PetscCall(RigidBodyModes(dm, field, &nsp));
   PetscCall(MatSetNearNullSpace(J, nsp));
   PetscCall(MatNullSpaceDestroy(&nsp));
   PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCGDSW, &isGDSW));

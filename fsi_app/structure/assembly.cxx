@@ -1,4 +1,5 @@
 #include "assembly.h"
+#include "discretization/nodes.h"
 #include "verification/mms.h"
 
 namespace fsi {
@@ -22,7 +23,7 @@ static PetscErrorCode ForEachCell(DM dm, Vec X, const StructureBlock &sb, Body b
     CellGeometry g;
     PetscInt     off[10], n = 0;
     PetscScalar *x = nullptr;
-    PetscCall(CellP2(dm, section, c, g, off));
+    PetscCall(CellP2(dm, section, c, g, off, nullptr));
     PetscCall(DMPlexVecGetClosure(dm, section, X, c, &n, &x));
     PetscCall(body(c, g, off, x, n));
     PetscCall(DMPlexVecRestoreClosure(dm, section, X, c, &n, &x));
@@ -45,13 +46,89 @@ static PetscReal PointOf(const CellGeometry &g, const PetscReal l[4], int d)
   return l[0] * g.x[0][d] + l[1] * g.x[1][d] + l[2] * g.x[2][d] + l[3] * g.x[3][d];
 }
 
+/* + int_faces p n . v: the pressure p pushes the wall along -n, n its outward normal. */
+static PetscErrorCode AddPressure(DM dm, const StructureBlock &sb, Vec Fl)
+{
+  PetscSection section;
+  IS           values;
+  PetscInt     nv;
+  const PetscInt *v;
+
+  PetscFunctionBegin;
+  if (!sb.loaded || sb.pressure == 0) PetscFunctionReturn(0);
+  PetscCall(DMGetLocalSection(dm, &section));
+  PetscCall(DMLabelGetValueIS(sb.loaded, &values));
+  PetscCall(ISGetLocalSize(values, &nv));
+  PetscCall(ISGetIndices(values, &v));
+  for (PetscInt k = 0; k < nv; k++) {
+    IS              faces;
+    PetscInt        nf;
+    const PetscInt *f;
+    PetscCall(DMLabelGetStratumIS(sb.loaded, v[k], &faces));
+    PetscCall(ISGetLocalSize(faces, &nf));
+    PetscCall(ISGetIndices(faces, &f));
+    for (PetscInt i = 0; i < nf; i++) {
+      const PetscInt *support;
+      PetscInt        ns, cell = -1, *closure = nullptr, ncl, fv[3], nfv = 0, vStart, vEnd;
+      PetscCall(DMPlexGetSupportSize(dm, f[i], &ns));
+      PetscCall(DMPlexGetSupport(dm, f[i], &support));
+      for (PetscInt s = 0; s < ns; s++) {
+        PetscInt r = 1;
+        if (sb.region) PetscCall(DMLabelGetValue(sb.region, support[s], &r));
+        if (r == 1) cell = support[s];
+      }
+      if (cell < 0) continue; /* a face of another region */
+      PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+      PetscCall(DMPlexGetTransitiveClosure(dm, f[i], PETSC_TRUE, &ncl, &closure));
+      for (PetscInt j = 0; j < ncl; j++)
+        if (closure[2 * j] >= vStart && closure[2 * j] < vEnd) fv[nfv++] = closure[2 * j];
+      PetscCall(DMPlexRestoreTransitiveClosure(dm, f[i], PETSC_TRUE, &ncl, &closure));
+      CellGeometry g;
+      PetscInt     off[10], cv[4], n;
+      PetscCall(CellP2(dm, section, cell, g, off, &n));
+      { /* the cell's vertices in our order, to place the face in barycentric coordinates */
+        PetscInt *cl = nullptr, nc, m = 0;
+        PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &nc, &cl));
+        for (PetscInt j = 0; j < nc; j++)
+          if (cl[2 * j] >= vStart && cl[2 * j] < vEnd) cv[m++] = cl[2 * j];
+        PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &nc, &cl));
+      }
+      int slot[3], opposite = 0 + 1 + 2 + 3;
+      for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 4; b++)
+          if (cv[b] == fv[a]) slot[a] = b;
+      opposite -= slot[0] + slot[1] + slot[2];
+      PetscReal e1[3], e2[3], nrm[3], out[3];
+      for (int d = 0; d < 3; d++) e1[d] = g.x[slot[1]][d] - g.x[slot[0]][d], e2[d] = g.x[slot[2]][d] - g.x[slot[0]][d], out[d] = g.x[slot[0]][d] - g.x[opposite][d];
+      nrm[0] = e1[1] * e2[2] - e1[2] * e2[1], nrm[1] = e1[2] * e2[0] - e1[0] * e2[2], nrm[2] = e1[0] * e2[1] - e1[1] * e2[0];
+      const PetscReal sign = (nrm[0] * out[0] + nrm[1] * out[1] + nrm[2] * out[2]) > 0 ? 1 : -1;
+      std::vector<PetscScalar> r(n, 0.0);
+      for (PetscInt q = 0; q < sb.faceRule.nq; q++) {
+        PetscReal l[4] = {0, 0, 0, 0}, N[10];
+        for (int a = 0; a < 3; a++) l[slot[a]] = sb.faceRule.mu[3 * q + a];
+        P2Values(l, N);
+        /* dA = 2 area dmu and n = sign nrm / (2 area): the areas cancel */
+        const PetscReal w = sb.faceRule.w[q] * sb.pressure * sign;
+        for (int a = 0; a < 10; a++)
+          for (int c = 0; c < 3; c++) r[off[a] + c] += w * N[a] * nrm[c];
+      }
+      PetscCall(DMPlexVecSetClosure(dm, section, Fl, cell, r.data(), ADD_ALL_VALUES));
+    }
+    PetscCall(ISRestoreIndices(faces, &f));
+    PetscCall(ISDestroy(&faces));
+  }
+  PetscCall(ISRestoreIndices(values, &v));
+  PetscCall(ISDestroy(&values));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode StructureResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
 {
   const StructureBlock &sb = *(StructureBlock *)ctx;
   PetscSection          section;
 
   PetscFunctionBegin;
-  PetscCall(DMPlexInsertBoundaryValues(dm, PETSC_TRUE, Xl, 0.0, nullptr, nullptr, nullptr));
+  PetscCall(InsertEssentialValues(dm, 0.0, Xl));
   PetscCall(DMGetLocalSection(dm, &section));
   PetscCall(VecZeroEntries(Fl));
   PetscCall(ForEachCell(dm, Xl, sb, [&](PetscInt c, const CellGeometry &g, const PetscInt off[10], const PetscScalar *x, PetscInt n) -> PetscErrorCode {
@@ -78,6 +155,7 @@ PetscErrorCode StructureResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
     PetscCall(DMPlexVecSetClosure(dm, section, Fl, c, r.data(), ADD_ALL_VALUES));
     PetscFunctionReturn(0);
   }));
+  PetscCall(AddPressure(dm, sb, Fl));
   PetscFunctionReturn(0);
 }
 
@@ -87,7 +165,7 @@ PetscErrorCode StructureJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
   PetscSection          section, global;
 
   PetscFunctionBegin;
-  PetscCall(DMPlexInsertBoundaryValues(dm, PETSC_TRUE, Xl, 0.0, nullptr, nullptr, nullptr));
+  PetscCall(InsertEssentialValues(dm, 0.0, Xl));
   PetscCall(DMGetLocalSection(dm, &section));
   PetscCall(DMGetGlobalSection(dm, &global));
   PetscCall(MatZeroEntries(P));

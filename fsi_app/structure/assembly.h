@@ -13,6 +13,9 @@ struct StructureBlock {
   PetscBool   mms = PETSC_FALSE;     /* body force of the manufactured solution */
   DMLabel     region = nullptr;      /* cells of the wall (value 1), or all cells */
   P2Rule      rule;
+  FaceRule    faceRule;
+  PetscReal   pressure = 0;          /* dead pressure on the faces of `loaded` (pushes along -n) */
+  DMLabel     loaded = nullptr;
 };
 
 /* DMSNES local callbacks (the context is the StructureBlock). */

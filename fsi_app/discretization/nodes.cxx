@@ -1,0 +1,130 @@
+#include "nodes.h"
+#include <petscds.h>
+
+namespace fsi {
+
+PetscErrorCode NodePosition(DM dm, PetscInt point, PetscReal x[3])
+{
+  Vec                coords;
+  DM                 cdm;
+  PetscSection       csec;
+  PetscInt           vStart, vEnd, np = 1;
+  const PetscInt    *pts = &point;
+  const PetscScalar *xa;
+
+  PetscFunctionBegin;
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(DMGetCoordinateDM(dm, &cdm));
+  PetscCall(DMGetLocalSection(cdm, &csec));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  if (point < vStart || point >= vEnd) { /* an edge: the midpoint of its vertices */
+    PetscCall(DMPlexGetCone(dm, point, &pts));
+    np = 2;
+  }
+  PetscCall(VecGetArrayRead(coords, &xa));
+  x[0] = x[1] = x[2] = 0;
+  for (PetscInt k = 0; k < np; k++) {
+    PetscInt off;
+    PetscCall(PetscSectionGetOffset(csec, pts[k], &off));
+    for (int d = 0; d < 3; d++) x[d] += PetscRealPart(xa[off + d]) / np;
+  }
+  PetscCall(VecRestoreArrayRead(coords, &xa));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InsertEssentialValues(DM dm, PetscReal t, Vec local)
+{
+  PetscDS      ds;
+  PetscSection section;
+  PetscInt     nb;
+  PetscScalar *u;
+
+  PetscFunctionBegin;
+  PetscCall(DMGetDS(dm, &ds));
+  PetscCall(DMGetLocalSection(dm, &section));
+  PetscCall(PetscDSGetNumBoundary(ds, &nb));
+  PetscCall(VecGetArray(local, &u));
+  for (PetscInt b = 0; b < nb; b++) {
+    DMBoundaryConditionType type;
+    DMLabel                 label;
+    PetscInt                nv, field, nc;
+    const PetscInt         *values, *comps;
+    void (*func)(void), (*func_t)(void);
+    void *ctx;
+    PetscCall(PetscDSGetBoundary(ds, b, nullptr, &type, nullptr, &label, &nv, &values, &field, &nc, &comps, &func, &func_t, &ctx));
+    if (type != DM_BC_ESSENTIAL || !func) continue;
+    auto g = (PetscErrorCode(*)(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *))func;
+    for (PetscInt k = 0; k < nv; k++) {
+      IS              pts;
+      PetscInt        n;
+      const PetscInt *p;
+      PetscCall(DMLabelGetStratumIS(label, values[k], &pts));
+      if (!pts) continue;
+      PetscCall(ISGetLocalSize(pts, &n));
+      PetscCall(ISGetIndices(pts, &p));
+      for (PetscInt i = 0; i < n; i++) {
+        PetscInt *closure = nullptr, ncl;
+        PetscCall(DMPlexGetTransitiveClosure(dm, p[i], PETSC_TRUE, &ncl, &closure));
+        for (PetscInt j = 0; j < ncl; j++) {
+          const PetscInt q = closure[2 * j];
+          PetscInt       dof, off;
+          PetscCall(PetscSectionGetFieldDof(section, q, field, &dof));
+          if (!dof) continue;
+          PetscCall(PetscSectionGetFieldOffset(section, q, field, &off));
+          PetscReal   x[3];
+          PetscScalar val[3];
+          PetscCall(NodePosition(dm, q, x));
+          PetscCall(g(3, t, x, dof, val, ctx));
+          for (PetscInt c = 0; c < dof; c++) u[off + c] = val[c];
+        }
+        PetscCall(DMPlexRestoreTransitiveClosure(dm, p[i], PETSC_TRUE, &ncl, &closure));
+      }
+      PetscCall(ISRestoreIndices(pts, &p));
+      PetscCall(ISDestroy(&pts));
+    }
+  }
+  PetscCall(VecRestoreArray(local, &u));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RigidBodyModes(DM dm, PetscInt field, MatNullSpace *nsp)
+{
+  PetscSection section;
+  Vec          local, modes[6];
+  PetscInt     pStart, pEnd;
+
+  PetscFunctionBegin;
+  PetscCall(DMGetLocalSection(dm, &section));
+  PetscCall(PetscSectionGetChart(section, &pStart, &pEnd));
+  PetscCall(DMGetLocalVector(dm, &local));
+  for (int m = 0; m < 6; m++) {
+    PetscScalar *u;
+    PetscCall(VecSet(local, 0.0));
+    PetscCall(VecGetArray(local, &u));
+    for (PetscInt p = pStart; p < pEnd; p++) {
+      PetscInt dof, off;
+      PetscCall(PetscSectionGetFieldDof(section, p, field, &dof));
+      if (dof != 3) continue;
+      PetscCall(PetscSectionGetFieldOffset(section, p, field, &off));
+      PetscReal x[3];
+      PetscCall(NodePosition(dm, p, x));
+      const PetscReal r[6][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-x[1], x[0], 0}, {0, -x[2], x[1]}, {x[2], 0, -x[0]}};
+      for (int c = 0; c < 3; c++) u[off + c] = r[m][c];
+    }
+    PetscCall(VecRestoreArray(local, &u));
+    PetscCall(DMCreateGlobalVector(dm, &modes[m]));
+    PetscCall(DMLocalToGlobal(dm, local, INSERT_VALUES, modes[m])); /* constrained dofs drop out */
+    for (int k = 0; k < m; k++) {                                 /* Gram-Schmidt */
+      PetscScalar dot;
+      PetscCall(VecDot(modes[m], modes[k], &dot));
+      PetscCall(VecAXPY(modes[m], -dot, modes[k]));
+    }
+    PetscCall(VecNormalize(modes[m], nullptr));
+  }
+  PetscCall(DMRestoreLocalVector(dm, &local));
+  PetscCall(MatNullSpaceCreate(PetscObjectComm((PetscObject)dm), PETSC_FALSE, 6, modes, nsp));
+  for (auto &v : modes) PetscCall(VecDestroy(&v));
+  PetscFunctionReturn(0);
+}
+
+} // namespace fsi
