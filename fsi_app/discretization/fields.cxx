@@ -1,4 +1,5 @@
 #include "fields.h"
+#include "mesh/mesh.h"
 #include <petscfe.h>
 
 namespace fsi {
@@ -9,7 +10,6 @@ static PetscErrorCode RegionLabel(DM dm, const std::string &region, DMLabel *lab
   const std::string name = "region_" + region;
   PetscBool         has;
   DMLabel           group;
-  IS                values;
 
   PetscFunctionBegin;
   PetscCall(DMHasLabel(dm, name.c_str(), &has));
@@ -18,19 +18,7 @@ static PetscErrorCode RegionLabel(DM dm, const std::string &region, DMLabel *lab
     PetscCheck(group, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_WRONG, "the mesh has no group '%s' to put a field on", region.c_str());
     PetscCall(DMCreateLabel(dm, name.c_str()));
     PetscCall(DMGetLabel(dm, name.c_str(), label));
-    PetscCall(DMLabelGetValueIS(group, &values));
-    const PetscInt *v;
-    PetscInt        nv;
-    PetscCall(ISGetLocalSize(values, &nv));
-    PetscCall(ISGetIndices(values, &v));
-    for (PetscInt k = 0; k < nv; k++) {
-      IS pts;
-      PetscCall(DMLabelGetStratumIS(group, v[k], &pts));
-      if (pts) PetscCall(DMLabelSetStratumIS(*label, 1, pts));
-      PetscCall(ISDestroy(&pts));
-    }
-    PetscCall(ISRestoreIndices(values, &v));
-    PetscCall(ISDestroy(&values));
+    PetscCall(ForEachLabelPoint(group, {}, [&](PetscInt p) { return DMLabelSetValue(*label, p, 1); }));
     PetscCall(DMPlexLabelComplete(dm, *label));
   }
   PetscCall(DMGetLabel(dm, name.c_str(), label));

@@ -1,4 +1,5 @@
 #include "nodes.h"
+#include "mesh/mesh.h"
 #include <petscds.h>
 
 namespace fsi {
@@ -54,34 +55,25 @@ PetscErrorCode InsertEssentialValues(DM dm, PetscReal t, Vec local)
     PetscCall(PetscDSGetBoundary(ds, b, nullptr, &type, nullptr, &label, &nv, &values, &field, &nc, &comps, &func, &func_t, &ctx));
     if (type != DM_BC_ESSENTIAL || !func) continue;
     auto g = (PetscErrorCode(*)(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *))func;
-    for (PetscInt k = 0; k < nv; k++) {
-      IS              pts;
-      PetscInt        n;
-      const PetscInt *p;
-      PetscCall(DMLabelGetStratumIS(label, values[k], &pts));
-      if (!pts) continue;
-      PetscCall(ISGetLocalSize(pts, &n));
-      PetscCall(ISGetIndices(pts, &p));
-      for (PetscInt i = 0; i < n; i++) {
-        PetscInt *closure = nullptr, ncl;
-        PetscCall(DMPlexGetTransitiveClosure(dm, p[i], PETSC_TRUE, &ncl, &closure));
-        for (PetscInt j = 0; j < ncl; j++) {
-          const PetscInt q = closure[2 * j];
-          PetscInt       dof, off;
-          PetscCall(PetscSectionGetFieldDof(section, q, field, &dof));
-          if (!dof) continue;
-          PetscCall(PetscSectionGetFieldOffset(section, q, field, &off));
-          PetscReal   x[3];
-          PetscScalar val[3];
-          PetscCall(NodePosition(dm, q, x));
-          PetscCall(g(3, t, x, dof, val, ctx));
-          for (PetscInt c = 0; c < dof; c++) u[off + c] = val[c];
-        }
-        PetscCall(DMPlexRestoreTransitiveClosure(dm, p[i], PETSC_TRUE, &ncl, &closure));
+    PetscCall(ForEachLabelPoint(label, std::vector<PetscInt>(values, values + nv), [&](PetscInt point) -> PetscErrorCode {
+      PetscInt *closure = nullptr, ncl;
+      PetscFunctionBegin;
+      PetscCall(DMPlexGetTransitiveClosure(dm, point, PETSC_TRUE, &ncl, &closure));
+      for (PetscInt j = 0; j < ncl; j++) {
+        const PetscInt q = closure[2 * j];
+        PetscInt       dof, off;
+        PetscCall(PetscSectionGetFieldDof(section, q, field, &dof));
+        if (!dof) continue;
+        PetscCall(PetscSectionGetFieldOffset(section, q, field, &off));
+        PetscReal   x[3];
+        PetscScalar val[3];
+        PetscCall(NodePosition(dm, q, x));
+        PetscCall(g(3, t, x, dof, val, ctx));
+        for (PetscInt c = 0; c < dof; c++) u[off + c] = val[c];
       }
-      PetscCall(ISRestoreIndices(pts, &p));
-      PetscCall(ISDestroy(&pts));
-    }
+      PetscCall(DMPlexRestoreTransitiveClosure(dm, point, PETSC_TRUE, &ncl, &closure));
+      PetscFunctionReturn(0);
+    }));
   }
   PetscCall(VecRestoreArray(local, &u));
   PetscFunctionReturn(0);

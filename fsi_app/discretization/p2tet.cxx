@@ -5,25 +5,35 @@ namespace fsi {
 
 const int EdgeVertex[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
-PetscErrorCode CreateP2Rule(PetscInt degree, P2Rule &rule)
+/* PETSc's rule on the [-1,1] simplex of dimension dim, as weights on the unit simplex and
+   dim + 1 barycentric coordinates per point. */
+static PetscErrorCode BarycentricRule(PetscInt dim, PetscInt degree, std::vector<PetscReal> &w, std::vector<PetscReal> &bary)
 {
   PetscQuadrature  q;
-  PetscInt         dim, nc, nq;
+  PetscInt         qdim, nc, nq;
   const PetscReal *pts, *wts;
 
   PetscFunctionBegin;
-  PetscCall(PetscDTSimplexQuadrature(3, degree, PETSCDTSIMPLEXQUAD_DEFAULT, &q));
-  PetscCall(PetscQuadratureGetData(q, &dim, &nc, &nq, &pts, &wts));
-  rule.nq = nq;
-  rule.w.resize(nq), rule.lambda.resize(4 * nq), rule.N.resize(10 * nq);
+  PetscCall(PetscDTSimplexQuadrature(dim, degree, PETSCDTSIMPLEXQUAD_DEFAULT, &q));
+  PetscCall(PetscQuadratureGetData(q, &qdim, &nc, &nq, &pts, &wts));
+  w.resize(nq), bary.resize((dim + 1) * nq);
   for (PetscInt p = 0; p < nq; p++) {
-    PetscReal *l = &rule.lambda[4 * p], *N = &rule.N[10 * p];
-    for (int d = 0; d < 3; d++) l[d + 1] = (pts[3 * p + d] + 1) / 2; /* reference simplex [-1,1]^3 corner */
-    l[0]      = 1 - l[1] - l[2] - l[3];
-    rule.w[p] = wts[p] / 8; /* the [-1,1] simplex has volume 4/3, ours 1/6 */
-    P2Values(l, N);
+    PetscReal *l = &bary[(dim + 1) * p];
+    l[0]         = 1;
+    for (PetscInt d = 0; d < dim; d++) l[d + 1] = (pts[dim * p + d] + 1) / 2, l[0] -= l[d + 1];
+    w[p] = wts[p] / (1 << dim); /* the map from [-1,1] halves every direction */
   }
   PetscCall(PetscQuadratureDestroy(&q));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CreateP2Rule(PetscInt degree, P2Rule &rule)
+{
+  PetscFunctionBegin;
+  PetscCall(BarycentricRule(3, degree, rule.w, rule.lambda));
+  rule.nq = (PetscInt)rule.w.size();
+  rule.N.resize(10 * rule.nq);
+  for (PetscInt p = 0; p < rule.nq; p++) P2Values(&rule.lambda[4 * p], &rule.N[10 * p]);
   PetscFunctionReturn(0);
 }
 
@@ -35,21 +45,9 @@ void P2Values(const PetscReal l[4], PetscReal N[10])
 
 PetscErrorCode CreateFaceRule(PetscInt degree, FaceRule &rule)
 {
-  PetscQuadrature  q;
-  PetscInt         dim, nc, nq;
-  const PetscReal *pts, *wts;
-
   PetscFunctionBegin;
-  PetscCall(PetscDTSimplexQuadrature(2, degree, PETSCDTSIMPLEXQUAD_DEFAULT, &q));
-  PetscCall(PetscQuadratureGetData(q, &dim, &nc, &nq, &pts, &wts));
-  rule.nq = nq;
-  rule.w.resize(nq), rule.mu.resize(3 * nq);
-  for (PetscInt p = 0; p < nq; p++) {
-    rule.mu[3 * p + 1] = (pts[2 * p] + 1) / 2, rule.mu[3 * p + 2] = (pts[2 * p + 1] + 1) / 2;
-    rule.mu[3 * p]     = 1 - rule.mu[3 * p + 1] - rule.mu[3 * p + 2];
-    rule.w[p]          = wts[p] / 4; /* the [-1,1] triangle has area 2, ours 1/2 */
-  }
-  PetscCall(PetscQuadratureDestroy(&q));
+  PetscCall(BarycentricRule(2, degree, rule.w, rule.mu));
+  rule.nq = (PetscInt)rule.w.size();
   PetscFunctionReturn(0);
 }
 

@@ -29,14 +29,11 @@ PetscErrorCode CountLabel(DM dm, const std::string &name, PetscInt depth, PetscI
 {
   DMLabel  label;
   PetscInt local = 0, pStart, pEnd;
-  IS       values;
 
   PetscFunctionBegin;
   *count = 0;
   PetscCall(DMGetLabel(dm, name.c_str(), &label));
   if (label) {
-    const PetscInt *v;
-    PetscInt        nv;
     PetscSF         sf;
     const PetscInt *leaves = nullptr;
     PetscInt        nleaves = 0;
@@ -46,23 +43,10 @@ PetscErrorCode CountLabel(DM dm, const std::string &name, PetscInt depth, PetscI
     std::vector<char> ghost(pEnd > pStart ? pEnd - pStart : 0, 0);
     for (PetscInt l = 0; l < nleaves && leaves; l++)
       if (leaves[l] >= pStart && leaves[l] < pEnd) ghost[leaves[l] - pStart] = 1;
-    PetscCall(DMLabelGetValueIS(label, &values));
-    PetscCall(ISGetLocalSize(values, &nv));
-    PetscCall(ISGetIndices(values, &v));
-    for (PetscInt k = 0; k < nv; k++) {
-      IS              pts;
-      PetscInt        np;
-      const PetscInt *p;
-      PetscCall(DMLabelGetStratumIS(label, v[k], &pts));
-      if (!pts) continue;
-      PetscCall(ISGetLocalSize(pts, &np));
-      PetscCall(ISGetIndices(pts, &p));
-      for (PetscInt q = 0; q < np; q++) local += p[q] >= pStart && p[q] < pEnd && !ghost[p[q] - pStart];
-      PetscCall(ISRestoreIndices(pts, &p));
-      PetscCall(ISDestroy(&pts));
-    }
-    PetscCall(ISRestoreIndices(values, &v));
-    PetscCall(ISDestroy(&values));
+    PetscCall(ForEachLabelPoint(label, {}, [&](PetscInt p) -> PetscErrorCode {
+      local += p >= pStart && p < pEnd && !ghost[p - pStart];
+      return 0;
+    }));
   }
   PetscCallMPI(MPIU_Allreduce(&local, count, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)dm)));
   PetscFunctionReturn(0);

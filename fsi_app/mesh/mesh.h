@@ -13,6 +13,38 @@ namespace fsi {
    cell dual graph). Errors name the file, the group, and what the file has. */
 PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vector<std::string> &required, DM *dm);
 
+/* Call f(point) for every point of `label` whose value is in `values` (every value if empty). */
+template <class F>
+PetscErrorCode ForEachLabelPoint(DMLabel label, const std::vector<PetscInt> &values, F f)
+{
+  std::vector<PetscInt> vals(values);
+  PetscFunctionBegin;
+  if (vals.empty()) {
+    IS              is;
+    PetscInt        nv;
+    const PetscInt *v;
+    PetscCall(DMLabelGetValueIS(label, &is));
+    PetscCall(ISGetLocalSize(is, &nv));
+    PetscCall(ISGetIndices(is, &v));
+    vals.assign(v, v + nv);
+    PetscCall(ISRestoreIndices(is, &v));
+    PetscCall(ISDestroy(&is));
+  }
+  for (PetscInt value : vals) {
+    IS              pts;
+    PetscInt        np;
+    const PetscInt *p;
+    PetscCall(DMLabelGetStratumIS(label, value, &pts));
+    if (!pts) continue;
+    PetscCall(ISGetLocalSize(pts, &np));
+    PetscCall(ISGetIndices(pts, &p));
+    for (PetscInt i = 0; i < np; i++) PetscCall(f(p[i]));
+    PetscCall(ISRestoreIndices(pts, &p));
+    PetscCall(ISDestroy(&pts));
+  }
+  PetscFunctionReturn(0);
+}
+
 /* Global number of points of depth `depth` (3: cells, 2: faces, 0: vertices) in label `name`. */
 PetscErrorCode CountLabel(DM dm, const std::string &name, PetscInt depth, PetscInt *count);
 

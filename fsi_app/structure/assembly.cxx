@@ -1,5 +1,6 @@
 #include "assembly.h"
 #include "discretization/nodes.h"
+#include "mesh/mesh.h"
 #include "verification/mms.h"
 
 namespace fsi {
@@ -50,39 +51,28 @@ static PetscReal PointOf(const CellGeometry &g, const PetscReal l[4], int d)
 static PetscErrorCode AddPressure(DM dm, const StructureBlock &sb, Vec Fl)
 {
   PetscSection section;
-  IS           values;
-  PetscInt     nv;
-  const PetscInt *v;
+  PetscInt     vStart, vEnd;
 
   PetscFunctionBegin;
   if (!sb.loaded || sb.pressure == 0) PetscFunctionReturn(0);
   PetscCall(DMGetLocalSection(dm, &section));
-  PetscCall(DMLabelGetValueIS(sb.loaded, &values));
-  PetscCall(ISGetLocalSize(values, &nv));
-  PetscCall(ISGetIndices(values, &v));
-  for (PetscInt k = 0; k < nv; k++) {
-    IS              faces;
-    PetscInt        nf;
-    const PetscInt *f;
-    PetscCall(DMLabelGetStratumIS(sb.loaded, v[k], &faces));
-    PetscCall(ISGetLocalSize(faces, &nf));
-    PetscCall(ISGetIndices(faces, &f));
-    for (PetscInt i = 0; i < nf; i++) {
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(ForEachLabelPoint(sb.loaded, {}, [&](PetscInt face) -> PetscErrorCode {
       const PetscInt *support;
-      PetscInt        ns, cell = -1, *closure = nullptr, ncl, fv[3], nfv = 0, vStart, vEnd;
-      PetscCall(DMPlexGetSupportSize(dm, f[i], &ns));
-      PetscCall(DMPlexGetSupport(dm, f[i], &support));
+      PetscInt        ns, cell = -1, *closure = nullptr, ncl, fv[3], nfv = 0;
+      PetscFunctionBegin;
+      PetscCall(DMPlexGetSupportSize(dm, face, &ns));
+      PetscCall(DMPlexGetSupport(dm, face, &support));
       for (PetscInt s = 0; s < ns; s++) {
         PetscInt r = 1;
         if (sb.region) PetscCall(DMLabelGetValue(sb.region, support[s], &r));
         if (r == 1) cell = support[s];
       }
-      if (cell < 0) continue; /* a face of another region */
-      PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
-      PetscCall(DMPlexGetTransitiveClosure(dm, f[i], PETSC_TRUE, &ncl, &closure));
+      if (cell < 0) PetscFunctionReturn(0); /* a face of another region */
+      PetscCall(DMPlexGetTransitiveClosure(dm, face, PETSC_TRUE, &ncl, &closure));
       for (PetscInt j = 0; j < ncl; j++)
         if (closure[2 * j] >= vStart && closure[2 * j] < vEnd) fv[nfv++] = closure[2 * j];
-      PetscCall(DMPlexRestoreTransitiveClosure(dm, f[i], PETSC_TRUE, &ncl, &closure));
+      PetscCall(DMPlexRestoreTransitiveClosure(dm, face, PETSC_TRUE, &ncl, &closure));
       CellGeometry g;
       PetscInt     off[10], cv[4], n;
       PetscCall(CellP2(dm, section, cell, g, off, &n));
@@ -113,12 +103,8 @@ static PetscErrorCode AddPressure(DM dm, const StructureBlock &sb, Vec Fl)
           for (int c = 0; c < 3; c++) r[off[a] + c] += w * N[a] * nrm[c];
       }
       PetscCall(DMPlexVecSetClosure(dm, section, Fl, cell, r.data(), ADD_ALL_VALUES));
-    }
-    PetscCall(ISRestoreIndices(faces, &f));
-    PetscCall(ISDestroy(&faces));
-  }
-  PetscCall(ISRestoreIndices(values, &v));
-  PetscCall(ISDestroy(&values));
+      PetscFunctionReturn(0);
+  }));
   PetscFunctionReturn(0);
 }
 
