@@ -20,8 +20,10 @@ struct Scene {
   PetscReal pressure                 = 0;    /* dead pressure on the faces of group `loaded` */
   char      loaded[64]               = "interface";
   Material  material                 = LINEAR_ELASTIC;
-  PetscReal E = 1.0, nu = 0.3;
+  PetscReal E = 1.0, nu = 0.3;        /* linear elastic */
+  PetscReal mu = 7.72e4, kappa = 3.833e6; /* Neo-Hooke (dyn/cm^2: 7.72 kPa, 383.3 kPa) */
   PetscInt  degree = 2, subdomains = 1;
+  PetscInt  loadSteps = 1; /* statics: the load in equal increments, one Newton solve each */
 };
 
 static std::vector<std::string> Split(const char *s)
@@ -44,17 +46,23 @@ static PetscErrorCode ReadScene(Scene &sc)
   PetscCall(PetscOptionsString("-structure_region", "physical group of the wall's cells (empty: every cell)", nullptr, sc.region, sc.region, sizeof(sc.region), nullptr));
   PetscCall(PetscOptionsString("-structure_clamp", "groups of faces where the displacement is zero (comma separated)", nullptr, sc.clamp, sc.clamp, sizeof(sc.clamp), nullptr));
   PetscCall(PetscOptionsReal("-structure_pressure", "pressure on the faces of -structure_pressure_group (dyn/cm^2)", nullptr, sc.pressure, &sc.pressure, nullptr));
+  PetscCall(PetscOptionsInt("-structure_load_steps", "apply the load in this many equal increments (statics)", nullptr, sc.loadSteps, &sc.loadSteps, nullptr));
   PetscCall(PetscOptionsString("-structure_pressure_group", "group of faces the pressure acts on", nullptr, sc.loaded, sc.loaded, sizeof(sc.loaded), nullptr));
   PetscCall(PetscOptionsBool("-mms", "manufactured solution d = sin(pi x)sin(pi y)sin(pi z)(1,1,1) on the unit cube", nullptr, sc.mms, &sc.mms, nullptr));
   PetscCall(PetscOptionsEnum("-material", "constitutive law of the wall", nullptr, MaterialNames, (PetscEnum)sc.material, (PetscEnum *)&sc.material, nullptr));
   PetscCall(PetscOptionsReal("-E", "Young's modulus (linear elastic)", nullptr, sc.E, &sc.E, nullptr));
   PetscCall(PetscOptionsReal("-nu", "Poisson ratio (linear elastic)", nullptr, sc.nu, &sc.nu, nullptr));
+  PetscCall(PetscOptionsReal("-nh_mu", "Neo-Hooke shear modulus (dyn/cm^2)", nullptr, sc.mu, &sc.mu, nullptr));
+  PetscCall(PetscOptionsReal("-nh_kappa", "Neo-Hooke bulk modulus (dyn/cm^2)", nullptr, sc.kappa, &sc.kappa, nullptr));
   PetscCall(PetscOptionsInt("-structure_degree", "polynomial degree of the displacement", nullptr, sc.degree, &sc.degree, nullptr));
   PetscCall(PetscOptionsInt("-structure_subdomains", "GDSW subdomains per rank (METIS on the rank's cells)", nullptr, sc.subdomains, &sc.subdomains, nullptr));
   PetscOptionsEnd();
   PetscCheck(sc.E > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-E %g: Young's modulus must be positive", (double)sc.E);
   PetscCheck(sc.nu > -1 && sc.nu < 0.5, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-nu %g: the Poisson ratio must lie in (-1, 0.5)", (double)sc.nu);
+  PetscCheck(sc.mu > 0 && sc.kappa > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-nh_mu %g -nh_kappa %g: both moduli must be positive", (double)sc.mu, (double)sc.kappa);
+  PetscCheck(!sc.mms || sc.material == LINEAR_ELASTIC, PETSC_COMM_WORLD, PETSC_ERR_SUP, "-mms: the manufactured solution is for -material linear");
   PetscCheck(sc.degree >= 1 && sc.degree <= 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_degree %" PetscInt_FMT ": use 1, 2 or 3", sc.degree);
+  PetscCheck(sc.loadSteps >= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_load_steps %" PetscInt_FMT ": at least 1", sc.loadSteps);
   PetscCheck(sc.subdomains >= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_subdomains %" PetscInt_FMT ": at least 1", sc.subdomains);
   PetscFunctionReturn(0);
 }
@@ -99,8 +107,8 @@ static PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb,
   PetscCall(DMCreateDS(dm));
   PetscCheck(sc.degree == 2, PETSC_COMM_WORLD, PETSC_ERR_SUP, "-structure_degree %" PetscInt_FMT ": the element loops are P2 (use 2)", sc.degree);
   PetscCall(GetMaterialLaw(sc.material, &sb.law));
-  sb.param[0] = sc.E / (2 * (1 + sc.nu));
-  sb.param[1] = sc.E * sc.nu / ((1 + sc.nu) * (1 - 2 * sc.nu));
+  if (sc.material == LINEAR_ELASTIC) sb.param[0] = sc.E / (2 * (1 + sc.nu)), sb.param[1] = sc.E * sc.nu / ((1 + sc.nu) * (1 - 2 * sc.nu));
+  else sb.param[0] = sc.mu, sb.param[1] = sc.kappa;
   sb.mms      = sc.mms;
   if (sc.region[0]) PetscCall(DMGetLabel(dm, (std::string("region_") + sc.region).c_str(), &sb.region));
   PetscCall(CreateP2Rule(sc.mms ? 5 : 2, sb.rule)); /* stiffness of affine P2: degree 2; the trigonometric load needs more */
@@ -154,6 +162,7 @@ int main(int argc, char **argv)
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "unknowns: structure %" PetscInt_FMT " fluid 0 pressure 0 geometry 0 multiplier 0\n", N));
 
   PetscCall(SNESCreate(PETSC_COMM_WORLD, &snes));
+  sb.snes = snes;
   PetscCall(SNESSetDM(snes, dm));
   PetscCall(DMCreateMatrix(dm, &J));
   PetscCall(SNESSetJacobian(snes, J, J, nullptr, nullptr));
@@ -165,18 +174,28 @@ int main(int argc, char **argv)
   PetscCall(SetGDSWSubdomains(pc, dm, J, sc.region, field, sc.subdomains));
 
   PetscCall(VecSet(d, 0.0));
-  PetscLogDouble t0, t1;
+  PetscLogDouble      t0, t1;
+  PetscInt            newton = 0, krylov = 0;
+  SNESConvergedReason reason = SNES_CONVERGED_ITERATING;
   PetscCall(PetscTime(&t0));
-  PetscCall(SNESSolve(snes, nullptr, d));
+  for (PetscInt step = 1; step <= sc.loadSteps; step++) {
+    PetscInt n, k;
+    sb.pressure = sc.pressure * step / sc.loadSteps;
+    PetscCall(SNESSolve(snes, nullptr, d));
+    PetscCall(SNESGetIterationNumber(snes, &n));
+    PetscCall(SNESGetLinearSolveIterations(snes, &k));
+    PetscCall(SNESGetConvergedReason(snes, &reason));
+    newton += n, krylov += k;
+    if (sc.loadSteps > 1) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "load step %" PetscInt_FMT "/%" PetscInt_FMT " newton %" PetscInt_FMT " krylov %" PetscInt_FMT " %s\n", step, sc.loadSteps, n, k, SNESConvergedReasons[reason]));
+    if (reason < 0) break;
+  }
   PetscCall(PetscTime(&t1));
-  PetscInt            newton, krylov;
-  SNESConvergedReason reason;
-  PetscCall(SNESGetIterationNumber(snes, &newton));
-  PetscCall(SNESGetLinearSolveIterations(snes, &krylov));
-  PetscCall(SNESGetConvergedReason(snes, &reason));
   PetscReal dmax;
   PetscCall(VecNorm(d, NORM_INFINITY, &dmax));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "newton %" PetscInt_FMT " krylov %" PetscInt_FMT " reason %s time %.3f s max displacement %.6e\n", newton, krylov, SNESConvergedReasons[reason], t1 - t0, (double)dmax));
+  PetscCheck(reason != SNES_DIVERGED_FUNCTION_DOMAIN, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED,
+             "Newton stopped after %" PetscInt_FMT " steps: an element inverted (det F <= 0) in every step the line search tried; apply the load in more increments (-structure_load_steps %" PetscInt_FMT " now)", newton, sc.loadSteps);
+  PetscCheck(reason > 0, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton did not converge (%s after %" PetscInt_FMT " steps in all); see -snes_monitor, or apply the load in more increments (-structure_load_steps %" PetscInt_FMT " now)", SNESConvergedReasons[reason], newton, sc.loadSteps);
   if (sc.mms) {
     PetscErrorCode (*exact[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {MMSElasticityExact}; /* PetscFE quadrature of the field */
     PetscReal err;

@@ -32,14 +32,15 @@ static PetscErrorCode ForEachCell(DM dm, Vec X, const StructureBlock &sb, Body b
   PetscFunctionReturn(0);
 }
 
-/* F = I + grad d at a point, from the nodal displacements. */
-static void DeformationGradient(const PetscScalar *x, const PetscInt off[10], const PetscReal dN[10][3], PetscReal F[9])
+/* F = I + grad d at a point, from the nodal displacements; returns det F. */
+static PetscReal DeformationGradient(const PetscScalar *x, const PetscInt off[10], const PetscReal dN[10][3], PetscReal F[9])
 {
   for (int i = 0; i < 3; i++)
     for (int j = 0; j < 3; j++) F[i * 3 + j] = (i == j);
   for (int a = 0; a < 10; a++)
     for (int i = 0; i < 3; i++)
       for (int j = 0; j < 3; j++) F[i * 3 + j] += PetscRealPart(x[off[a] + i]) * dN[a][j];
+  return F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
 }
 
 static PetscReal PointOf(const CellGeometry &g, const PetscReal l[4], int d)
@@ -114,6 +115,8 @@ PetscErrorCode StructureResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
   PetscSection          section;
 
   PetscFunctionBegin;
+  PetscInt              inverted = 0;
+
   PetscCall(InsertEssentialValues(dm, 0.0, Xl));
   PetscCall(DMGetLocalSection(dm, &section));
   PetscCall(VecZeroEntries(Fl));
@@ -124,7 +127,10 @@ PetscErrorCode StructureResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
       const PetscReal *l = &sb.rule.lambda[4 * q], *N = &sb.rule.N[10 * q], wq = sb.rule.w[q] * g.detE;
       PetscReal        dN[10][3], F[9], P[9], b[3] = {0, 0, 0};
       P2Gradients(g, l, dN);
-      DeformationGradient(x, off, dN, F);
+      if (DeformationGradient(x, off, dN, F) <= 0) { /* inverted: no stress exists, say so below */
+        inverted++;
+        continue;
+      }
       sb.law.stress(F, sb.param, P);
       if (sb.mms) {
         const PetscReal xq[3] = {PointOf(g, l, 0), PointOf(g, l, 1), PointOf(g, l, 2)};
@@ -142,6 +148,10 @@ PetscErrorCode StructureResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
     PetscFunctionReturn(0);
   }));
   PetscCall(AddPressure(dm, sb, Fl));
+  if (inverted) {
+    PetscCall(PetscInfo(dm, "%" PetscInt_FMT " quadrature points with det F <= 0: the step is outside the domain of the law\n", inverted));
+    if (sb.snes) PetscCall(SNESSetFunctionDomainError(sb.snes));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -162,7 +172,7 @@ PetscErrorCode StructureJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
       const PetscReal *l = &sb.rule.lambda[4 * q], wq = sb.rule.w[q] * g.detE;
       PetscReal        dN[10][3], F[9], A[81], G[10][3][9];
       P2Gradients(g, l, dN);
-      DeformationGradient(x, off, dN, F);
+      if (DeformationGradient(x, off, dN, F) <= 0) continue; /* the residual reported it */
       sb.law.tangent(F, sb.param, A);
       /* G[a][i][k*3+l] = sum_j dN_a,j A_ijkl: then K_(ai)(bk) = sum_l G[a][i][kl] dN_b,l */
       for (int a = 0; a < 10; a++)

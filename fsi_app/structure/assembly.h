@@ -4,12 +4,14 @@
 
 #include "discretization/p2tet.h"
 #include "structure/materials.h"
+#include <petscsnes.h>
 
 namespace fsi {
 
 struct StructureBlock {
   MaterialLaw law;
-  PetscReal   param[2];              /* the law's parameters (linear: mu, lambda) */
+  PetscReal   param[2];              /* the law's parameters (see materials.h) */
+  SNES        snes = nullptr;        /* told when a cell is inverted (det F <= 0) */
   PetscBool   mms = PETSC_FALSE;     /* body force of the manufactured solution */
   DMLabel     region = nullptr;      /* cells of the wall (value 1), or all cells */
   P2Rule      rule;

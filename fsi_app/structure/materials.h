@@ -14,7 +14,8 @@ struct MaterialLaw {
   void (*tangent)(const PetscReal F[9], const PetscReal *param, PetscReal A[81]);
 };
 
-/* param of the linear elastic law: {mu, lambda} */
+/* Parameters: linear {mu, lambda}; Neo-Hooke {mu, kappa} with
+   Psi = mu/2 (J^(-2/3) I1 - 3) + kappa/4 (J^2 - 1 - 2 ln J). */
 PetscErrorCode GetMaterialLaw(Material m, MaterialLaw *law);
 
 } // namespace fsi
