@@ -24,6 +24,8 @@ struct Scene {
   PetscReal mu = 7.72e4, kappa = 3.833e6; /* Neo-Hooke (dyn/cm^2: 7.72 kPa, 383.3 kPa) */
   PetscInt  degree = 2, subdomains = 1;
   PetscInt  loadSteps = 1; /* statics: the load in equal increments, one Newton solve each */
+  PetscReal dt = 0, tFinal = 0.01, rho = 1.2; /* dynamics when dt > 0 (s, g/cm^3) */
+  PetscReal pulseEnd = 0;                      /* the pressure acts for t <= pulseEnd (0: always) */
 };
 
 static std::vector<std::string> Split(const char *s)
@@ -46,6 +48,10 @@ static PetscErrorCode ReadScene(Scene &sc)
   PetscCall(PetscOptionsString("-structure_region", "physical group of the wall's cells (empty: every cell)", nullptr, sc.region, sc.region, sizeof(sc.region), nullptr));
   PetscCall(PetscOptionsString("-structure_clamp", "groups of faces where the displacement is zero (comma separated)", nullptr, sc.clamp, sc.clamp, sizeof(sc.clamp), nullptr));
   PetscCall(PetscOptionsReal("-structure_pressure", "pressure on the faces of -structure_pressure_group (dyn/cm^2)", nullptr, sc.pressure, &sc.pressure, nullptr));
+  PetscCall(PetscOptionsReal("-dt", "time step (s); 0 solves the static problem", nullptr, sc.dt, &sc.dt, nullptr));
+  PetscCall(PetscOptionsReal("-t_final", "end time (s)", nullptr, sc.tFinal, &sc.tFinal, nullptr));
+  PetscCall(PetscOptionsReal("-structure_density", "density of the wall (g/cm^3)", nullptr, sc.rho, &sc.rho, nullptr));
+  PetscCall(PetscOptionsReal("-structure_pressure_until", "the pressure acts while t <= this (s); 0: always", nullptr, sc.pulseEnd, &sc.pulseEnd, nullptr));
   PetscCall(PetscOptionsInt("-structure_load_steps", "apply the load in this many equal increments (statics)", nullptr, sc.loadSteps, &sc.loadSteps, nullptr));
   PetscCall(PetscOptionsString("-structure_pressure_group", "group of faces the pressure acts on", nullptr, sc.loaded, sc.loaded, sizeof(sc.loaded), nullptr));
   PetscCall(PetscOptionsBool("-mms", "manufactured solution d = sin(pi x)sin(pi y)sin(pi z)(1,1,1) on the unit cube", nullptr, sc.mms, &sc.mms, nullptr));
@@ -62,6 +68,8 @@ static PetscErrorCode ReadScene(Scene &sc)
   PetscCheck(sc.mu > 0 && sc.kappa > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-nh_mu %g -nh_kappa %g: both moduli must be positive", (double)sc.mu, (double)sc.kappa);
   PetscCheck(!sc.mms || sc.material == LINEAR_ELASTIC, PETSC_COMM_WORLD, PETSC_ERR_SUP, "-mms: the manufactured solution is for -material linear");
   PetscCheck(sc.degree >= 1 && sc.degree <= 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_degree %" PetscInt_FMT ": use 1, 2 or 3", sc.degree);
+  PetscCheck(sc.dt >= 0 && (sc.dt == 0 || sc.tFinal >= sc.dt), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-dt %g -t_final %g: need 0 <= dt <= t_final", (double)sc.dt, (double)sc.tFinal);
+  PetscCheck(sc.rho > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_density %g: must be positive", (double)sc.rho);
   PetscCheck(sc.loadSteps >= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_load_steps %" PetscInt_FMT ": at least 1", sc.loadSteps);
   PetscCheck(sc.subdomains >= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_subdomains %" PetscInt_FMT ": at least 1", sc.subdomains);
   PetscFunctionReturn(0);
@@ -111,7 +119,8 @@ static PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb,
   else sb.param[0] = sc.mu, sb.param[1] = sc.kappa;
   sb.mms      = sc.mms;
   if (sc.region[0]) PetscCall(DMGetLabel(dm, (std::string("region_") + sc.region).c_str(), &sb.region));
-  PetscCall(CreateP2Rule(sc.mms ? 5 : 2, sb.rule)); /* stiffness of affine P2: degree 2; the trigonometric load needs more */
+  /* affine P2 stiffness: degree 2; the mass matrix: 4; the trigonometric load: more */
+  PetscCall(CreateP2Rule(sc.mms ? 5 : (sc.dt > 0 ? 4 : 2), sb.rule));
   PetscCall(CreateFaceRule(2, sb.faceRule));          /* P2 times a constant normal */
   sb.pressure = sc.pressure;
   if (sc.pressure != 0) PetscCall(DMGetLabel(dm, sc.loaded, &sb.loaded));
@@ -175,20 +184,35 @@ int main(int argc, char **argv)
 
   PetscCall(VecSet(d, 0.0));
   PetscLogDouble      t0, t1;
-  PetscInt            newton = 0, krylov = 0;
+  PetscInt            newton = 0, krylov = 0, solves = 0;
   SNESConvergedReason reason = SNES_CONVERGED_ITERATING;
+  const PetscBool     dynamic = (PetscBool)(sc.dt > 0);
+  const PetscInt      nsteps  = dynamic ? (PetscInt)PetscCeilReal(sc.tFinal / sc.dt - 1e-9) : sc.loadSteps;
+  if (dynamic) { /* d^n and d^(n-1) start at rest */
+    sb.inertia = sc.rho / (sc.dt * sc.dt);
+    for (auto &v : sb.previous) {
+      PetscCall(DMCreateLocalVector(dm, &v));
+      PetscCall(VecSet(v, 0.0));
+    }
+  }
   PetscCall(PetscTime(&t0));
-  for (PetscInt step = 1; step <= sc.loadSteps; step++) {
-    PetscInt n, k;
-    sb.pressure = sc.pressure * step / sc.loadSteps;
+  for (PetscInt step = 1; step <= nsteps; step++) {
+    PetscInt       n, k;
+    const PetscReal t = dynamic ? step * sc.dt : 0;
+    sb.pressure       = dynamic ? (sc.pulseEnd == 0 || t <= sc.pulseEnd + 1e-12 ? sc.pressure : 0.0) : sc.pressure * step / nsteps;
     PetscCall(SNESSolve(snes, nullptr, d));
     PetscCall(SNESGetIterationNumber(snes, &n));
     PetscCall(SNESGetLinearSolveIterations(snes, &k));
     PetscCall(SNESGetConvergedReason(snes, &reason));
-    newton += n, krylov += k;
-    if (sc.loadSteps > 1) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "load step %" PetscInt_FMT "/%" PetscInt_FMT " newton %" PetscInt_FMT " krylov %" PetscInt_FMT " %s\n", step, sc.loadSteps, n, k, SNESConvergedReasons[reason]));
+    newton += n, krylov += k, solves++;
+    if (nsteps > 1) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s %" PetscInt_FMT "/%" PetscInt_FMT " t %.4e newton %" PetscInt_FMT " krylov %" PetscInt_FMT " %s\n", dynamic ? "step" : "load step", step, nsteps, (double)t, n, k, SNESConvergedReasons[reason]));
     if (reason < 0) break;
+    if (dynamic) { /* d^(n-1) <- d^n <- d */
+      PetscCall(VecCopy(sb.previous[0], sb.previous[1]));
+      PetscCall(DMGlobalToLocal(dm, d, INSERT_VALUES, sb.previous[0]));
+    }
   }
+  if (dynamic && solves) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "steps %" PetscInt_FMT " newton per step %.2f krylov per newton %.2f\n", solves, (double)newton / solves, newton ? (double)krylov / newton : 0.0));
   PetscCall(PetscTime(&t1));
   PetscReal dmax;
   PetscCall(VecNorm(d, NORM_INFINITY, &dmax));
@@ -202,6 +226,7 @@ int main(int argc, char **argv)
     PetscCall(DMComputeL2Diff(dm, 0.0, exact, nullptr, d, &err));
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "L2 error %.6e\n", (double)err));
   }
+  for (auto &v : sb.previous) PetscCall(VecDestroy(&v));
   PetscCall(MatDestroy(&J));
   PetscCall(VecDestroy(&d));
   PetscCall(SNESDestroy(&snes));

@@ -121,8 +121,18 @@ PetscErrorCode StructureResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
   PetscCall(DMGetLocalSection(dm, &section));
   PetscCall(VecZeroEntries(Fl));
   PetscCall(ForEachCell(dm, Xl, sb, [&](PetscInt c, const CellGeometry &g, const PetscInt off[10], const PetscScalar *x, PetscInt n) -> PetscErrorCode {
-    std::vector<PetscScalar> r(n, 0.0);
+    std::vector<PetscScalar> r(n, 0.0), accel(n, 0.0);
     PetscFunctionBegin;
+    if (sb.inertia) { /* (d - 2 d^n + d^(n-1)) at the nodes of the cell */
+      for (int k = 0; k < 2; k++) {
+        PetscScalar *y = nullptr;
+        PetscInt     m = 0;
+        PetscCall(DMPlexVecGetClosure(dm, section, sb.previous[k], c, &m, &y));
+        for (PetscInt i = 0; i < n; i++) accel[i] += (k == 0 ? -2.0 : 1.0) * y[i];
+        PetscCall(DMPlexVecRestoreClosure(dm, section, sb.previous[k], c, &m, &y));
+      }
+      for (PetscInt i = 0; i < n; i++) accel[i] += x[i];
+    }
     for (PetscInt q = 0; q < sb.rule.nq; q++) {
       const PetscReal *l = &sb.rule.lambda[4 * q], *N = &sb.rule.N[10 * q], wq = sb.rule.w[q] * g.detE;
       PetscReal        dN[10][3], F[9], P[9], b[3] = {0, 0, 0};
@@ -137,9 +147,13 @@ PetscErrorCode StructureResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
         MMSElasticityDivStress(xq, sb.param[0], sb.param[1], b); /* body force -div sigma */
         for (int i = 0; i < 3; i++) b[i] = -b[i];
       }
+      PetscReal acc[3] = {0, 0, 0};
+      if (sb.inertia)
+        for (int a = 0; a < 10; a++)
+          for (int i = 0; i < 3; i++) acc[i] += sb.inertia * N[a] * PetscRealPart(accel[off[a] + i]);
       for (int a = 0; a < 10; a++)
         for (int i = 0; i < 3; i++) {
-          PetscReal v = -b[i] * N[a];
+          PetscReal v = (acc[i] - b[i]) * N[a];
           for (int j = 0; j < 3; j++) v += P[i * 3 + j] * dN[a][j];
           r[off[a] + i] += wq * v;
         }
@@ -169,8 +183,12 @@ PetscErrorCode StructureJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
     std::vector<PetscScalar> K(n * n, 0.0);
     PetscFunctionBegin;
     for (PetscInt q = 0; q < sb.rule.nq; q++) {
-      const PetscReal *l = &sb.rule.lambda[4 * q], wq = sb.rule.w[q] * g.detE;
+      const PetscReal *l = &sb.rule.lambda[4 * q], *N = &sb.rule.N[10 * q], wq = sb.rule.w[q] * g.detE;
       PetscReal        dN[10][3], F[9], A[81], G[10][3][9];
+      if (sb.inertia)
+        for (int a = 0; a < 10; a++)
+          for (int b = 0; b < 10; b++)
+            for (int i = 0; i < 3; i++) K[(off[a] + i) * n + off[b] + i] += wq * sb.inertia * N[a] * N[b];
       P2Gradients(g, l, dN);
       if (DeformationGradient(x, off, dN, F) <= 0) continue; /* the residual reported it */
       sb.law.tangent(F, sb.param, A);

@@ -1,5 +1,6 @@
 /* The structure block's residual and Jacobian, assembled cell by cell with the P2 element of
-   discretization/p2tet.h: R(d) = int P(F) : grad v - int b . v. */
+   discretization/p2tet.h: R(d) = int rho (d - 2 d^n + d^(n-1))/dt^2 . v + int P(F) : grad v
+   - int b . v + int_faces p n . v (fully implicit backward differences in time). */
 #pragma once
 
 #include "discretization/p2tet.h"
@@ -17,6 +18,8 @@ struct StructureBlock {
   P2Rule      rule;
   FaceRule    faceRule;
   PetscReal   pressure = 0;          /* dead pressure on the faces of `loaded` (pushes along -n) */
+  PetscReal   inertia = 0;           /* rho / dt^2 (dynamics), 0 for statics */
+  Vec         previous[2] = {nullptr, nullptr}; /* local d^n, d^(n-1): inertia (d - 2 d^n + d^(n-1)) */
   DMLabel     loaded = nullptr;
 };
 
