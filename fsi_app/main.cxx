@@ -155,10 +155,10 @@ int main(int argc, char **argv)
   Scene          sc;
   StructureBlock sb;
   DM             dm;
-  SNES     snes;
-  Vec      d;
-  Mat      J;
-  PetscInt field, N;
+  SNES           snes;
+  Vec            d;
+  Mat            J;
+  PetscInt       field, N;
 
   PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
   PetscCall(PCGDSWRegister());
@@ -217,9 +217,11 @@ int main(int argc, char **argv)
   PetscReal dmax;
   PetscCall(VecNorm(d, NORM_INFINITY, &dmax));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "newton %" PetscInt_FMT " krylov %" PetscInt_FMT " reason %s time %.3f s max displacement %.6e\n", newton, krylov, SNESConvergedReasons[reason], t1 - t0, (double)dmax));
-  PetscCheck(reason != SNES_DIVERGED_FUNCTION_DOMAIN, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED,
-             "Newton stopped after %" PetscInt_FMT " steps: an element inverted (det F <= 0) in every step the line search tried; apply the load in more increments (-structure_load_steps %" PetscInt_FMT " now)", newton, sc.loadSteps);
-  PetscCheck(reason > 0, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton did not converge (%s after %" PetscInt_FMT " steps in all); see -snes_monitor, or apply the load in more increments (-structure_load_steps %" PetscInt_FMT " now)", SNESConvergedReasons[reason], newton, sc.loadSteps);
+  char cure[128]; /* what to change: the load increments (statics) or the time step */
+  if (dynamic) PetscCall(PetscSNPrintf(cure, sizeof(cure), "reduce the time step (-dt %g now)", (double)sc.dt));
+  else PetscCall(PetscSNPrintf(cure, sizeof(cure), "apply the load in more increments (-structure_load_steps %" PetscInt_FMT " now)", sc.loadSteps));
+  PetscCheck(reason != SNES_DIVERGED_FUNCTION_DOMAIN, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton stopped after %" PetscInt_FMT " steps: an element inverted (det F <= 0) in every step the line search tried; %s", newton, cure);
+  PetscCheck(reason > 0, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton did not converge (%s after %" PetscInt_FMT " steps in all); see -snes_monitor, or %s", SNESConvergedReasons[reason], newton, cure);
   if (sc.mms) {
     PetscErrorCode (*exact[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {MMSElasticityExact}; /* PetscFE quadrature of the field */
     PetscReal err;
