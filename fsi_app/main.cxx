@@ -175,6 +175,12 @@ int main(int argc, char **argv)
   PetscCall(SNESSetDM(snes, dm));
   PetscCall(DMCreateMatrix(dm, &J));
   PetscCall(SNESSetJacobian(snes, J, J, nullptr, nullptr));
+  if (sc.material == LINEAR_ELASTIC && sc.dt > 0) { /* the operator never changes: assemble and set up once */
+    PetscCall(SNESSetLagJacobian(snes, -2));
+    PetscCall(SNESSetLagJacobianPersists(snes, PETSC_TRUE));
+    PetscCall(SNESSetLagPreconditioner(snes, -2));
+    PetscCall(SNESSetLagPreconditionerPersists(snes, PETSC_TRUE));
+  }
   PetscCall(SNESSetFromOptions(snes));
   KSP ksp;
   PC  pc;
