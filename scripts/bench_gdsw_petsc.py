@@ -7,14 +7,14 @@ Usage: scripts/bench_gdsw_petsc.py [--quick | --plot]   (--plot redraws the PNG 
 import csv
 import os
 import re
-import subprocess
 import sys
+
+from benchlib import run, write_results
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ex71 = os.path.join(top, "build", "tests", "petsc_ksp_ksp_ex71")
 lib = os.path.join(top, "build", "pc_gdsw", "libpetscgdsw.so")
 out = os.path.join(top, "bench", "results", "gdsw_vs_petsc")
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 METHODS = {
     "gdsw (MATIS subdomains)": f"-dll_append {lib} -pc_type gdsw",
@@ -44,18 +44,12 @@ def main():
             for name, opts in METHODS.items():
                 cmd = (f"mpiexec --oversubscribe --mca mpi_yield_when_idle 1 -n {p**3} {ex71} -pde_type Elasticity -dim 3 "
                        f"-cells {c},{c},{c} -ksp_type cg -ksp_rtol 1e-8 -ksp_converged_reason {opts}")
-                r = subprocess.run(cmd.split(), env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-                m = re.search(r"CONVERGED_\w+ iterations (\d+)", r.stdout)
+                m = re.search(r"CONVERGED_\w+ iterations (\d+)", run(cmd))
                 its = int(m.group(1)) if m else -1
                 print(f"H/h={hh} N={p**3:3d} {name:32s} {its}", flush=True)
                 rows.append({"H_over_h": hh, "subdomains": p**3, "method": name, "iterations": its})
                 cmds.append(cmd)
-    with open(out + ".csv", "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
-    with open(out + ".cmd", "w") as f:
-        f.write("# produced by scripts/bench_gdsw_petsc.py" + (" --quick" if quick else "") + "\n" + "\n".join(cmds) + "\n")
+    write_results(out, rows, cmds, "scripts/bench_gdsw_petsc.py" + (" --quick" if quick else ""))
     plot(rows)
 
 

@@ -7,16 +7,15 @@ or GMRES (Neo-Hooke) iterations per Newton step, with the structure precondition
   PCASM (algebraic, one block per rank, overlap 1).
 2 MPI ranks, 8 subdomains per rank. Writes bench/results/wall_proxy.{csv,cmd}.
 Usage: scripts/bench_wall_proxy.py [T]   (default T = 0.003 s, the length of the pulse)"""
-import csv
 import os
 import re
-import subprocess
 import sys
+
+from benchlib import run, write_results
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 app = os.path.join(top, "build", "fsi_app", "fsi_app")
 out = os.path.join(top, "bench", "results", "wall_proxy")
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 T = sys.argv[1] if len(sys.argv) > 1 else "0.003"
 
 PCS = {
@@ -33,18 +32,13 @@ for mat, mopts in MATERIALS.items():
         for name, popts in PCS.items():
             cmd = (f"mpiexec -n 2 {app} -options_file {top}/scenes/wall_tube1_static.opts -dt {dt} -t_final {T} "
                    f"-structure_pressure_until 0.003 {mopts} -ksp_rtol 1e-6 {popts}")
-            r = subprocess.run(cmd.split(), env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-            m = re.search(r"steps (\d+) newton per step (\S+) krylov per newton (\S+)", r.stdout)
-            t = re.search(r"time (\S+) s", r.stdout)
+            log = run(cmd)
+            m = re.search(r"steps (\d+) newton per step (\S+) krylov per newton (\S+)", log)
+            t = re.search(r"time (\S+) s", log)
             row = {"material": mat, "dt": dt, "preconditioner": name,
                    "newton_per_step": m.group(2) if m else "failed", "krylov_per_newton": m.group(3) if m else "failed",
                    "time_s": t.group(1) if t else "failed"}
             print(row, flush=True)
             rows.append(row)
             cmds.append(cmd)
-with open(out + ".csv", "w", newline="") as f:
-    w = csv.DictWriter(f, fieldnames=list(rows[0]))
-    w.writeheader()
-    w.writerows(rows)
-with open(out + ".cmd", "w") as f:
-    f.write("# produced by scripts/bench_wall_proxy.py " + T + "\n" + "\n".join(cmds) + "\n")
+write_results(out, rows, cmds, "scripts/bench_wall_proxy.py " + T)
