@@ -17,6 +17,7 @@ struct Scene {
   char      region[64]               = "";   /* group of the structure's cells ("" all) */
   char      clamp[256]               = "";   /* groups with d = 0 */
   PetscBool mms                      = PETSC_FALSE;
+  PetscReal lameRadii[2]             = {0, 0}; /* Lame verification: inner and outer radius */
   PetscReal pressure                 = 0;    /* dead pressure on the faces of group `loaded` */
   char      loaded[64]               = "interface";
   Material  material                 = LINEAR_ELASTIC;
@@ -46,7 +47,7 @@ static PetscErrorCode ReadScene(Scene &sc)
   PetscCall(PetscOptionsString("-mesh", "gmsh mesh file", nullptr, sc.mesh, sc.mesh, sizeof(sc.mesh), nullptr));
   PetscCall(PetscOptionsInt("-refine", "uniform refinements of the mesh after distribution", nullptr, sc.refine, &sc.refine, nullptr));
   PetscCall(PetscOptionsString("-structure_region", "physical group of the wall's cells (empty: every cell)", nullptr, sc.region, sc.region, sizeof(sc.region), nullptr));
-  PetscCall(PetscOptionsString("-structure_clamp", "groups of faces where the displacement is zero (comma separated)", nullptr, sc.clamp, sc.clamp, sizeof(sc.clamp), nullptr));
+  PetscCall(PetscOptionsString("-structure_clamp", "groups of faces where the displacement is zero, comma separated; group:xz fixes only those components", nullptr, sc.clamp, sc.clamp, sizeof(sc.clamp), nullptr));
   PetscCall(PetscOptionsReal("-structure_pressure", "pressure on the faces of -structure_pressure_group (dyn/cm^2)", nullptr, sc.pressure, &sc.pressure, nullptr));
   PetscCall(PetscOptionsReal("-dt", "time step (s); 0 solves the static problem", nullptr, sc.dt, &sc.dt, nullptr));
   PetscCall(PetscOptionsReal("-t_final", "end time (s)", nullptr, sc.tFinal, &sc.tFinal, nullptr));
@@ -54,6 +55,8 @@ static PetscErrorCode ReadScene(Scene &sc)
   PetscCall(PetscOptionsReal("-structure_pressure_until", "the pressure acts while t <= this (s); 0: always", nullptr, sc.pulseEnd, &sc.pulseEnd, nullptr));
   PetscCall(PetscOptionsInt("-structure_load_steps", "apply the load in this many equal increments (statics)", nullptr, sc.loadSteps, &sc.loadSteps, nullptr));
   PetscCall(PetscOptionsString("-structure_pressure_group", "group of faces the pressure acts on", nullptr, sc.loaded, sc.loaded, sizeof(sc.loaded), nullptr));
+  PetscInt nradii = 2;
+  PetscCall(PetscOptionsRealArray("-lame", "verification against Lame's cylinder: inner,outer radius", nullptr, sc.lameRadii, &nradii, nullptr));
   PetscCall(PetscOptionsBool("-mms", "manufactured solution d = sin(pi x)sin(pi y)sin(pi z)(1,1,1) on the unit cube", nullptr, sc.mms, &sc.mms, nullptr));
   PetscCall(PetscOptionsEnum("-material", "constitutive law of the wall", nullptr, MaterialNames, (PetscEnum)sc.material, (PetscEnum *)&sc.material, nullptr));
   PetscCall(PetscOptionsReal("-E", "Young's modulus (linear elastic)", nullptr, sc.E, &sc.E, nullptr));
@@ -78,7 +81,8 @@ static PetscErrorCode ReadScene(Scene &sc)
 /* The mesh, refined; a label "boundary" on its boundary faces for the manufactured solution. */
 static PetscErrorCode CreateMesh(const Scene &sc, DM *dm)
 {
-  std::vector<std::string> required = Split(sc.clamp);
+  std::vector<std::string> required;
+  for (const auto &g : Split(sc.clamp)) required.push_back(g.substr(0, g.find(':')));
   if (sc.region[0]) required.push_back(sc.region);
   if (sc.pressure != 0) required.push_back(sc.loaded);
 
@@ -128,7 +132,14 @@ static PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb,
     PetscCall(DMGetLabel(dm, "boundary", &label));
     PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, "boundary", label, 1, &one, *field, 0, nullptr, (void (*)(void))MMSElasticityExact, nullptr, nullptr, nullptr));
   }
-  for (const auto &g : Split(sc.clamp)) {
+  for (const auto &spec : Split(sc.clamp)) {
+    const std::string g = spec.substr(0, spec.find(':'));
+    std::vector<PetscInt> comps; /* empty: all */
+    if (spec.find(':') != std::string::npos)
+      for (char c : spec.substr(spec.find(':') + 1)) {
+        PetscCheck(c == 'x' || c == 'y' || c == 'z', PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_clamp %s: components are x, y, z", spec.c_str());
+        comps.push_back(c - 'x');
+      }
     DMLabel         group;
     IS              values;
     PetscInt        nv;
@@ -143,7 +154,7 @@ static PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb,
     PetscInt any = nv, gany;
     PetscCallMPI(MPIU_Allreduce(&any, &gany, 1, MPIU_INT, MPI_MAX, PETSC_COMM_WORLD));
     if (ids.empty() && gany) ids.push_back(0); /* the label's value lives on other ranks */
-    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, g.c_str(), group, (PetscInt)ids.size(), ids.data(), *field, 0, nullptr, (void (*)(void))ZeroDisplacement, nullptr, nullptr, nullptr));
+    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, spec.c_str(), group, (PetscInt)ids.size(), ids.data(), *field, (PetscInt)comps.size(), comps.empty() ? nullptr : comps.data(), (void (*)(void))ZeroDisplacement, nullptr, nullptr, nullptr));
   }
   PetscCall(DMSNESSetFunctionLocal(dm, StructureResidual, &sb));
   PetscCall(DMSNESSetJacobianLocal(dm, StructureJacobian, &sb));
@@ -228,6 +239,19 @@ int main(int argc, char **argv)
   else PetscCall(PetscSNPrintf(cure, sizeof(cure), "apply the load in more increments (-structure_load_steps %" PetscInt_FMT " now)", sc.loadSteps));
   PetscCheck(reason != SNES_DIVERGED_FUNCTION_DOMAIN, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton stopped after %" PetscInt_FMT " steps: an element inverted (det F <= 0) in every step the line search tried; %s", newton, cure);
   PetscCheck(reason > 0, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton did not converge (%s after %" PetscInt_FMT " steps in all); see -snes_monitor, or %s", SNESConvergedReasons[reason], newton, cure);
+  if (sc.lameRadii[1] > 0) {
+    PetscErrorCode (*exact[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {LameDisplacement};
+    Lame      lame = LameCylinder(sc.E, sc.nu, sc.pressure, sc.lameRadii[0], sc.lameRadii[1]);
+    void     *ctx[1] = {&lame};
+    PetscReal err, norm;
+    Vec       zero;
+    PetscCall(DMComputeL2Diff(dm, 0.0, exact, ctx, d, &err));
+    PetscCall(VecDuplicate(d, &zero));
+    PetscCall(VecSet(zero, 0.0));
+    PetscCall(DMComputeL2Diff(dm, 0.0, exact, ctx, zero, &norm));
+    PetscCall(VecDestroy(&zero));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "L2 error %.6e relative %.6e\n", (double)err, (double)(err / norm)));
+  }
   if (sc.mms) {
     PetscErrorCode (*exact[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {MMSElasticityExact}; /* PetscFE quadrature of the field */
     PetscReal err;

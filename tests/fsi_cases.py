@@ -63,6 +63,8 @@ def solve(*opts, np=1):
     r.update(newton=int(m.group(1)), krylov=int(m.group(2)), reason=m.group(3), dmax=float(m.group(4)))
     e = re.search(r"L2 error (\S+)", out)
     r["l2"] = float(e.group(1)) if e else None
+    rel = re.search(r"L2 error \S+ relative (\S+)", out)
+    r["l2_relative"] = float(rel.group(1)) if rel else None
     assert r["reason"].startswith("CONVERGED"), r
     return r
 
@@ -79,6 +81,26 @@ def structure_mms_rate():
     between(rates[1], 2.8, 3.3, "L2 rate, refinements 1 -> 2")
     between(rates[0], 1.8, 3.3, "L2 rate, refinements 0 -> 1")
     assert e[2] < 1e-3
+
+
+@case
+def structure_lame():
+    """Lame's thick-walled cylinder (quarter, symmetry and plane-strain conditions fix single
+    components, so GDSW works on dofs rather than whole nodes) under internal pressure: the
+    relative L2 error against u_r = A r + B / r falls with h (rate -> 2: the straight-sided
+    elements' geometric error), the inner displacement approaches A Ri + B / Ri."""
+    opts = ["-structure_clamp", "sym_x:x,sym_y:y,top:z,bottom:z", "-structure_pressure", 1, "-structure_pressure_group", "inner",
+            "-E", 1000, "-nu", 0.3, "-lame", "1,2", "-snes_type", "ksponly", "-ksp_type", "cg", "-ksp_rtol", "1e-12",
+            "-pc_type", "gdsw", "-structure_subdomains", 4]
+    r = [solve("-mesh", os.path.join(MESHES, f"quarter_cylinder_L{k}.msh"), *opts) for k in range(3)]
+    e = [x["l2_relative"] for x in r]
+    import math
+    print("relative L2 errors", e, "rates", [math.log2(e[k] / e[k + 1]) for k in range(2)])
+    assert e[0] > e[1] > e[2] and e[2] < 3e-3, e
+    between(math.log2(e[1] / e[2]), 1.6, 3.2, "L2 rate, levels 1 -> 2")
+    exact = 1.3 / (1000 * 3) * (0.4 + 4)  # A + B at r = Ri = 1
+    between(r[2]["dmax"] / exact, 0.99, 1.01, "inner displacement / exact")
+    between(solve("-mesh", os.path.join(MESHES, "quarter_cylinder_L1.msh"), *opts, np=2)["l2_relative"] / e[1], 0.999, 1.001, "2 ranks / 1 rank error")
 
 
 @case
@@ -173,7 +195,8 @@ def structure_bad_options():
                       (["-structure_region", "lumen"], "has no physical group 'lumen', which this scene needs"),
                       (["-structure_subdomains", 0], "-structure_subdomains 0: at least 1"),
                       (["-dt", -1], "need 0 <= dt <= t_final"),
-                      (["-structure_load_steps", 0], "-structure_load_steps 0: at least 1")):
+                      (["-structure_load_steps", 0], "-structure_load_steps 0: at least 1"),
+                      (["-structure_clamp", "wall_inlet_ring:w"], "-structure_clamp wall_inlet_ring:w: components are x, y, z")):
         out = run([APP, "-mesh", mesh] + WALL[2:] + [str(o) for o in opts], 1, fail=True)
         assert msg in out, msg
 

@@ -25,4 +25,19 @@ void MMSElasticityDivStress(const PetscReal x[3], PetscReal mu, PetscReal lambda
   }
 }
 
+Lame LameCylinder(PetscReal E, PetscReal nu, PetscReal p, PetscReal Ri, PetscReal Ro)
+{
+  const PetscReal c = (1 + nu) * p * Ri * Ri / (E * (Ro * Ro - Ri * Ri));
+  return {c * (1 - 2 * nu), c * Ro * Ro};
+}
+
+PetscErrorCode LameDisplacement(PetscInt, PetscReal, const PetscReal x[], PetscInt nc, PetscScalar *u, void *ctx)
+{
+  const Lame     *l  = (const Lame *)ctx;
+  const PetscReal r2 = x[0] * x[0] + x[1] * x[1], ur_over_r = l->A + l->B / r2;
+  u[0] = ur_over_r * x[0], u[1] = ur_over_r * x[1];
+  for (PetscInt c = 2; c < nc; c++) u[c] = 0;
+  return 0;
+}
+
 } // namespace fsi
