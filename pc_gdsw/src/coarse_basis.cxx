@@ -88,7 +88,7 @@ static void GroupValues(const PC_GDSW *gd, const Subdomain &s, CoarseGroup &g)
 
 /* Global numbering: the subdomain of smallest id in a group's sharing set numbers it; the
    owner of its representative node relays the number to the other subdomains. */
-static PetscErrorCode NumberGroups(PC pc)
+static PetscErrorCode NumberGroups(PC pc, PetscInt *nlocal)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
   PetscInt nmine = 0, first, nleaves, nroots;
@@ -120,7 +120,7 @@ static PetscErrorCode NumberGroups(PC pc)
       g.col0 = leaf[s.leaf0 + a];
       PetscCheck(g.col0 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "PCGDSW: coarse group at node %" PetscInt_FMT " was not numbered", g.rep);
     }
-  gd->coarseDim = nmine; /* local for now; the layout of Phi's columns */
+  *nlocal = nmine; /* the layout of Phi's columns */
   PetscFunctionReturn(0);
 }
 
@@ -288,7 +288,7 @@ static PetscErrorCode DropZeroColumns(PC pc, MatReuse reuse)
 PetscErrorCode GDSWBuildCoarseBasis(PC pc)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
-  PetscInt m, M, N;
+  PetscInt m, M, N, n;
   Mat      pre;
   MPI_Comm comm;
 
@@ -297,7 +297,7 @@ PetscErrorCode GDSWBuildCoarseBasis(PC pc)
   PetscCall(PetscLogEventBegin(GDSW_Basis, pc, 0, 0, 0));
   for (auto &s : *gd->sub)
     for (auto &g : s.groups) GroupValues(gd, s, g);
-  PetscCall(NumberGroups(pc));
+  PetscCall(NumberGroups(pc, &n));
   for (auto &s : *gd->sub) PetscCall(SetUpExtension(pc, s));
   PetscCall(PetscLogEventEnd(GDSW_Basis, pc, 0, 0, 0));
 
@@ -305,15 +305,15 @@ PetscErrorCode GDSWBuildCoarseBasis(PC pc)
   for (auto &s : *gd->sub) PetscCall(Extend(pc, s, MAT_INITIAL_MATRIX));
   PetscCall(MatGetLocalSize(gd->A, &m, nullptr));
   PetscCall(MatGetSize(gd->A, &M, nullptr));
-  PetscCallMPI(MPIU_Allreduce(&gd->coarseDim, &N, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPIU_Allreduce(&n, &N, 1, MPIU_INT, MPI_SUM, comm));
   PetscCall(MatCreate(comm, &pre));
   PetscCall(MatSetType(pre, MATPREALLOCATOR));
-  PetscCall(MatSetSizes(pre, m, gd->coarseDim, M, N));
+  PetscCall(MatSetSizes(pre, m, n, M, N));
   PetscCall(MatSetUp(pre));
   PetscCall(InsertPhi(pc, pre));
   PetscCall(MatCreate(comm, &gd->PhiFull));
   PetscCall(MatSetType(gd->PhiFull, MATAIJ));
-  PetscCall(MatSetSizes(gd->PhiFull, m, gd->coarseDim, M, N));
+  PetscCall(MatSetSizes(gd->PhiFull, m, n, M, N));
   PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, gd->PhiFull));
   PetscCall(MatDestroy(&pre));
   PetscCall(InsertPhi(pc, gd->PhiFull));

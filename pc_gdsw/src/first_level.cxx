@@ -22,7 +22,7 @@ static PetscErrorCode CreateScatters(PC pc)
     const PetscInt *idx;
     PetscCall(ISGetLocalSize(s.overlap, &n));
     PetscCall(ISGetIndices(s.overlap, &idx));
-    s.wOffset = total, s.wSize = n;
+    s.wOffset = total;
     for (PetscInt k = 0; k < n; k++) {
       all.push_back(idx[k]);
       const PetscInt node = idx[k] / bs;

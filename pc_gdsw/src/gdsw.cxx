@@ -108,7 +108,6 @@ static PetscErrorCode PCReset_GDSW(PC pc)
   PetscCall(VecScatterDestroy(&gd->restrictTo));
   PetscCall(VecScatterDestroy(&gd->prolongFrom));
   PetscCall(VecDestroy(&gd->tmp1));
-  PetscCall(VecDestroy(&gd->tmp2));
   gd->coarseDim = 0;
   gd->counts[0] = gd->counts[1] = gd->counts[2] = 0;
   PetscFunctionReturn(0);
@@ -147,7 +146,7 @@ static PetscErrorCode GetAIJOperator(PC pc, MatReuse reuse)
 {
   PC_GDSW  *gd = (PC_GDSW *)pc->data;
   Mat       P  = pc->pmat;
-  PetscBool isAIJ, isIS;
+  PetscBool isAIJ;
   PetscInt  M, N, m, n, bs;
   MPI_Comm  comm;
 
@@ -161,7 +160,6 @@ static PetscErrorCode GetAIJOperator(PC pc, MatReuse reuse)
   PetscCall(MatAssembled(P, &assembled));
   PetscCheck(assembled, comm, PETSC_ERR_ARG_WRONGSTATE, "PCGDSW: the operator is not assembled; call MatAssemblyBegin/End() first");
   PetscCall(PetscObjectTypeCompareAny((PetscObject)P, &isAIJ, MATSEQAIJ, MATMPIAIJ, ""));
-  PetscCall(PetscObjectTypeCompare((PetscObject)P, MATIS, &isIS));
   if (isAIJ) {
     if (reuse == MAT_INITIAL_MATRIX) {
       PetscCall(PetscObjectReference((PetscObject)P));
@@ -173,7 +171,6 @@ static PetscErrorCode GetAIJOperator(PC pc, MatReuse reuse)
     PetscCheck(known, comm, PETSC_ERR_SUP, "PCGDSW: matrix type %s is not supported; use AIJ, BAIJ, SBAIJ or IS", ((PetscObject)P)->type_name);
     PetscCall(MatConvert(P, MATAIJ, reuse == MAT_INITIAL_MATRIX ? MAT_INITIAL_MATRIX : MAT_REUSE_MATRIX, &gd->A));
   }
-  (void)isIS;
   /* dofs per node: the matrix block size, or what PCSetCoordinates implies */
   PetscCall(MatGetBlockSize(P, &bs));
   if (bs == 1 && gd->coords && gd->nCoordNodes > 0) {
@@ -211,6 +208,7 @@ static PetscErrorCode PCSetUp_GDSW(PC pc)
       else PetscCall(PetscInfo(pc, "the decomposition has no interface: no coarse level\n"));
     }
     PetscCall(GDSWSetUpFirstLevel(pc, MAT_INITIAL_MATRIX));
+    if (gd->coarseActive && gd->combination == PC_GDSW_MULTIPLICATIVE) PetscCall(MatCreateVecs(gd->A, &gd->tmp1, nullptr)); /* residual after the coarse correction */
   } else {
     /* same pattern, new values (Newton, time stepping): numeric refactorisations only */
     PetscCall(GetAIJOperator(pc, MAT_REUSE_MATRIX));
@@ -234,10 +232,6 @@ static PetscErrorCode PCApply_GDSW(PC pc, Vec x, Vec y)
   const PetscBool coarse = gd->coarseActive;
   if (coarse && gd->combination == PC_GDSW_MULTIPLICATIVE) {
     /* y = Q0 x + M1 (x - A Q0 x) */
-    if (!gd->tmp1) {
-      PetscCall(VecDuplicate(x, &gd->tmp1));
-      PetscCall(VecDuplicate(x, &gd->tmp2));
-    }
     PetscCall(GDSWApplyCoarse(pc, x, y));
     PetscCall(MatMult(pc->pmat, y, gd->tmp1));
     PetscCall(VecAYPX(gd->tmp1, -1.0, x));

@@ -53,7 +53,7 @@ struct Subdomain {
   Mat Aovl = nullptr;                   /* A(Omega_i^delta, Omega_i^delta), owned by PC_GDSW::AovlArr */
   KSP ksp = nullptr;
   Vec x = nullptr, y = nullptr;         /* views into the work vectors (arrays placed in apply) */
-  PetscInt wOffset = 0, wSize = 0;      /* slice of the concatenated work vector */
+  PetscInt wOffset = 0;                 /* start of its slice of the concatenated work vector */
 };
 
 } // namespace gdsw
@@ -98,7 +98,7 @@ typedef struct {
   /* first level */
   Vec        work, workOut;               /* concatenated subdomain vectors */
   VecScatter restrictTo, prolongFrom;     /* global -> work, work(subset) -> global */
-  Vec        tmp1, tmp2;                  /* global-size work for the multiplicative variant */
+  Vec        tmp1;                        /* global-size work for the multiplicative variant */
 } PC_GDSW;
 
 /* module entry points */
