@@ -2,14 +2,27 @@
 commands that produced them."""
 import csv
 import os
+import signal
 import subprocess
 
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
-def run(cmd):
-    """Output (stdout and stderr) of a command line."""
-    return subprocess.run(cmd.split(), env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True).stdout
+def run(cmd, timeout=None):
+    """Output (stdout and stderr) of a command line. After `timeout` seconds the command's process
+    group (mpiexec and its ranks) is ended and the output ends with "benchlib: TIMEOUT"."""
+    p = subprocess.Popen(cmd.split(), env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                         start_new_session=True)
+    try:
+        return p.communicate(timeout=timeout)[0]
+    except subprocess.TimeoutExpired:
+        os.killpg(p.pid, signal.SIGTERM)  # mpiexec passes it on to its ranks
+        try:
+            out = p.communicate(timeout=10)[0]
+        except subprocess.TimeoutExpired:
+            os.killpg(p.pid, signal.SIGKILL)
+            out = p.communicate()[0]
+        return out + f"\nbenchlib: TIMEOUT after {timeout} s\n"
 
 
 def write_results(out, rows, cmds, producer):
