@@ -69,7 +69,10 @@ PetscErrorCode InsertEssentialValues(DM dm, PetscReal t, Vec local)
         PetscScalar val[3];
         PetscCall(NodePosition(dm, q, x));
         PetscCall(g(3, t, x, dof, val, ctx));
-        for (PetscInt c = 0; c < dof; c++) u[off + c] = val[c];
+        if (nc) /* only the listed components are constrained */
+          for (PetscInt c = 0; c < nc; c++) u[off + comps[c]] = val[comps[c]];
+        else
+          for (PetscInt c = 0; c < dof; c++) u[off + c] = val[c];
       }
       PetscCall(DMPlexRestoreTransitiveClosure(dm, point, PETSC_TRUE, &ncl, &closure));
       PetscFunctionReturn(0);

@@ -37,6 +37,19 @@ PetscErrorCode CreateP2Rule(PetscInt degree, P2Rule &rule)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CreateP2Mass(PetscReal M[100])
+{
+  P2Rule rule;
+
+  PetscFunctionBegin;
+  PetscCall(CreateP2Rule(4, rule));
+  for (int k = 0; k < 100; k++) M[k] = 0;
+  for (PetscInt q = 0; q < rule.nq; q++)
+    for (int a = 0; a < 10; a++)
+      for (int b = 0; b < 10; b++) M[a * 10 + b] += rule.w[q] * rule.N[10 * q + a] * rule.N[10 * q + b];
+  PetscFunctionReturn(0);
+}
+
 void P2Values(const PetscReal l[4], PetscReal N[10])
 {
   for (int a = 0; a < 4; a++) N[a] = l[a] * (2 * l[a] - 1);
@@ -51,10 +64,10 @@ PetscErrorCode CreateFaceRule(PetscInt degree, FaceRule &rule)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CellP2(DM dm, PetscSection section, PetscInt cell, CellGeometry &g, PetscInt nodeOffset[10], PetscInt *closureSize)
+PetscErrorCode CellP2(DM dm, PetscSection section, PetscInt cell, CellGeometry &g, PetscInt nodeOffset[10], PetscInt *closureSize, PetscInt nodePoint[10])
 {
   PetscInt    *closure = nullptr, nclosure, vStart, vEnd, eStart, eEnd, nv = 0, off = 0;
-  PetscInt     vertex[4], edgeOffset[6], edgeCone[6][2], ne = 0;
+  PetscInt     vertex[4], edge[6], edgeOffset[6], edgeCone[6][2], ne = 0;
   Vec          coords;
   PetscSection csec;
   DM           cdm;
@@ -81,7 +94,7 @@ PetscErrorCode CellP2(DM dm, PetscSection section, PetscInt cell, CellGeometry &
     } else if (p >= eStart && p < eEnd) {
       const PetscInt *cone;
       PetscCall(DMPlexGetCone(dm, p, &cone));
-      edgeCone[ne][0] = cone[0], edgeCone[ne][1] = cone[1];
+      edgeCone[ne][0] = cone[0], edgeCone[ne][1] = cone[1], edge[ne] = p;
       edgeOffset[ne++] = off;
     }
     off += dof;
@@ -94,8 +107,13 @@ PetscErrorCode CellP2(DM dm, PetscSection section, PetscInt cell, CellGeometry &
     const PetscInt a = vertex[EdgeVertex[e][0]], b = vertex[EdgeVertex[e][1]];
     nodeOffset[4 + e] = -1;
     for (int f = 0; f < 6; f++)
-      if ((edgeCone[f][0] == a && edgeCone[f][1] == b) || (edgeCone[f][0] == b && edgeCone[f][1] == a)) nodeOffset[4 + e] = edgeOffset[f];
+      if ((edgeCone[f][0] == a && edgeCone[f][1] == b) || (edgeCone[f][0] == b && edgeCone[f][1] == a)) {
+        nodeOffset[4 + e] = edgeOffset[f];
+        if (nodePoint) nodePoint[4 + e] = edge[f];
+      }
   }
+  if (nodePoint)
+    for (int k = 0; k < 4; k++) nodePoint[k] = vertex[k];
   /* barycentric gradients: rows of E^{-1}, E = [x1 - x0, x2 - x0, x3 - x0] */
   PetscReal E[3][3], inv[3][3];
   for (int r = 0; r < 3; r++)

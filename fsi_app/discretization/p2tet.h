@@ -23,6 +23,9 @@ struct P2Rule {
 /* A rule exact for polynomials of `degree` (PETSc's simplex quadrature). */
 PetscErrorCode CreateP2Rule(PetscInt degree, P2Rule &rule);
 
+/* M[a*10+b] = int N_a N_b over the reference tetrahedron (volume 1/6): times |det E| per cell. */
+PetscErrorCode CreateP2Mass(PetscReal M[100]);
+
 /* The same on a triangle: weights for area 1/2, 3 barycentric coordinates per point. */
 struct FaceRule {
   PetscInt               nq = 0;
@@ -42,8 +45,9 @@ struct CellGeometry {
 
 /* Geometry of `cell`, and for each of its 10 P2 nodes the offset of the node's first dof in
    the cell's closure array of `section` (DMPlexVecGetClosure / DMPlexGetClosureIndices order)
-   for a vector field that is the only field on these points, and the closure size (or NULL). */
-PetscErrorCode CellP2(DM dm, PetscSection section, PetscInt cell, CellGeometry &g, PetscInt nodeOffset[10], PetscInt *closureSize);
+   for a vector field that is the only field on these points, the closure size, and the mesh
+   point (vertex or edge) of each node (the last two may be NULL). */
+PetscErrorCode CellP2(DM dm, PetscSection section, PetscInt cell, CellGeometry &g, PetscInt nodeOffset[10], PetscInt *closureSize, PetscInt nodePoint[10]);
 
 /* Physical basis gradients at one point: dN[a][d]. */
 void P2Gradients(const CellGeometry &g, const PetscReal lambda[4], PetscReal dN[10][3]);

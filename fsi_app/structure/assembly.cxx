@@ -1,167 +1,167 @@
 #include "assembly.h"
 #include "discretization/nodes.h"
-#include "mesh/mesh.h"
 #include "verification/mms.h"
 
 namespace fsi {
 
-/* Every cell of the block with its geometry, node offsets and the closure values of X. */
-template <class Body>
-static PetscErrorCode ForEachCell(DM dm, Vec X, const StructureBlock &sb, Body body)
-{
-  PetscSection section;
-  PetscInt     cStart, cEnd;
-
-  PetscFunctionBegin;
-  PetscCall(DMGetLocalSection(dm, &section));
-  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
-  for (PetscInt c = cStart; c < cEnd; c++) {
-    if (sb.region) {
-      PetscInt v;
-      PetscCall(DMLabelGetValue(sb.region, c, &v));
-      if (v != 1) continue;
-    }
-    CellGeometry g;
-    PetscInt     off[10], n = 0;
-    PetscScalar *x = nullptr;
-    PetscCall(CellP2(dm, section, c, g, off, nullptr));
-    PetscCall(DMPlexVecGetClosure(dm, section, X, c, &n, &x));
-    PetscCall(body(c, g, off, x, n));
-    PetscCall(DMPlexVecRestoreClosure(dm, section, X, c, &n, &x));
-  }
-  PetscFunctionReturn(0);
-}
-
 /* F = I + grad d at a point, from the nodal displacements; returns det F. */
-static PetscReal DeformationGradient(const PetscScalar *x, const PetscInt off[10], const PetscReal dN[10][3], PetscReal F[9])
+static PetscReal DeformationGradient(const PetscReal de[30], const PetscReal dN[10][3], PetscReal F[9])
 {
   for (int i = 0; i < 3; i++)
     for (int j = 0; j < 3; j++) F[i * 3 + j] = (i == j);
   for (int a = 0; a < 10; a++)
     for (int i = 0; i < 3; i++)
-      for (int j = 0; j < 3; j++) F[i * 3 + j] += PetscRealPart(x[off[a] + i]) * dN[a][j];
+      for (int j = 0; j < 3; j++) F[i * 3 + j] += de[3 * a + i] * dN[a][j];
   return F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
 }
 
-static PetscReal PointOf(const CellGeometry &g, const PetscReal l[4], int d)
+static void PointOf(const CellGeometry &g, const PetscReal l[4], PetscReal x[3])
 {
-  return l[0] * g.x[0][d] + l[1] * g.x[1][d] + l[2] * g.x[2][d] + l[3] * g.x[3][d];
+  for (int d = 0; d < 3; d++) x[d] = l[0] * g.x[0][d] + l[1] * g.x[1][d] + l[2] * g.x[2][d] + l[3] * g.x[3][d];
 }
 
-/* + int_faces p n . v: the pressure p pushes the wall along -n, n its outward normal. */
-static PetscErrorCode AddPressure(DM dm, const StructureBlock &sb, Vec Fl)
+static void Cross(const PetscReal a[3], const PetscReal b[3], PetscReal c[3])
 {
-  PetscSection section;
-  PetscInt     vStart, vEnd;
+  c[0] = a[1] * b[2] - a[2] * b[1], c[1] = a[2] * b[0] - a[0] * b[2], c[2] = a[0] * b[1] - a[1] * b[0];
+}
 
-  PetscFunctionBegin;
-  if (!sb.loaded || sb.pressure == 0) PetscFunctionReturn(0);
-  PetscCall(DMGetLocalSection(dm, &section));
-  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
-  PetscCall(ForEachLabelPoint(sb.loaded, {}, [&](PetscInt face) -> PetscErrorCode {
-      const PetscInt *support;
-      PetscInt        ns, cell = -1, *closure = nullptr, ncl, fv[3], nfv = 0;
-      PetscFunctionBegin;
-      PetscCall(DMPlexGetSupportSize(dm, face, &ns));
-      PetscCall(DMPlexGetSupport(dm, face, &support));
-      for (PetscInt s = 0; s < ns; s++) {
-        PetscInt r = 1;
-        if (sb.region) PetscCall(DMLabelGetValue(sb.region, support[s], &r));
-        if (r == 1) cell = support[s];
-      }
-      if (cell < 0) PetscFunctionReturn(0); /* a face of another region */
-      PetscCall(DMPlexGetTransitiveClosure(dm, face, PETSC_TRUE, &ncl, &closure));
-      for (PetscInt j = 0; j < ncl; j++)
-        if (closure[2 * j] >= vStart && closure[2 * j] < vEnd) fv[nfv++] = closure[2 * j];
-      PetscCall(DMPlexRestoreTransitiveClosure(dm, face, PETSC_TRUE, &ncl, &closure));
-      CellGeometry g;
-      PetscInt     off[10], cv[4], n;
-      PetscCall(CellP2(dm, section, cell, g, off, &n));
-      { /* the cell's vertices in our order, to place the face in barycentric coordinates */
-        PetscInt *cl = nullptr, nc, m = 0;
-        PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &nc, &cl));
-        for (PetscInt j = 0; j < nc; j++)
-          if (cl[2 * j] >= vStart && cl[2 * j] < vEnd) cv[m++] = cl[2 * j];
-        PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &nc, &cl));
-      }
-      int slot[3], opposite = 0 + 1 + 2 + 3;
-      for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 4; b++)
-          if (cv[b] == fv[a]) slot[a] = b;
-      opposite -= slot[0] + slot[1] + slot[2];
-      PetscReal e1[3], e2[3], nrm[3], out[3];
-      for (int d = 0; d < 3; d++) e1[d] = g.x[slot[1]][d] - g.x[slot[0]][d], e2[d] = g.x[slot[2]][d] - g.x[slot[0]][d], out[d] = g.x[slot[0]][d] - g.x[opposite][d];
-      nrm[0] = e1[1] * e2[2] - e1[2] * e2[1], nrm[1] = e1[2] * e2[0] - e1[0] * e2[2], nrm[2] = e1[0] * e2[1] - e1[1] * e2[0];
-      const PetscReal sign = (nrm[0] * out[0] + nrm[1] * out[1] + nrm[2] * out[2]) > 0 ? 1 : -1;
-      std::vector<PetscScalar> r(n, 0.0);
-      for (PetscInt q = 0; q < sb.faceRule.nq; q++) {
-        PetscReal l[4] = {0, 0, 0, 0}, N[10];
-        for (int a = 0; a < 3; a++) l[slot[a]] = sb.faceRule.mu[3 * q + a];
-        P2Values(l, N);
-        /* dA = 2 area dmu and n = sign nrm / (2 area): the areas cancel */
-        const PetscReal w = sb.faceRule.w[q] * sb.pressure * sign;
-        for (int a = 0; a < 10; a++)
-          for (int c = 0; c < 3; c++) r[off[a] + c] += w * N[a] * nrm[c];
-      }
-      PetscCall(DMPlexVecSetClosure(dm, section, Fl, cell, r.data(), ADD_ALL_VALUES));
-      PetscFunctionReturn(0);
-  }));
-  PetscFunctionReturn(0);
+/* At face point q: basis values N, their d/ds and d/dt (dN[a][0], dN[a][1]) for the face
+   parametrised by (s, t) = (l[slot[1]], l[slot[2]]), and the tangents d/ds x, d/dt x of the
+   reference face (dead pressure) or of the deformed one (follower). */
+static void FacePoint(const StructureBlock &sb, const CellGeometry &g, const P2Face &f, const PetscReal de[30], PetscInt q, PetscReal N[10], PetscReal dN[10][3], PetscReal ts[3], PetscReal tt[3])
+{
+  PetscReal    l[4] = {0, 0, 0, 0};
+  CellGeometry st   = g; /* "gradients" of the barycentric coordinates in (s, t) */
+  for (int a = 0; a < 3; a++) l[f.slot[a]] = sb.faceRule.mu[3 * q + a];
+  for (int k = 0; k < 4; k++) st.gradLambda[k][0] = (k == f.slot[1]) - (k == f.slot[0]), st.gradLambda[k][1] = (k == f.slot[2]) - (k == f.slot[0]), st.gradLambda[k][2] = 0;
+  P2Values(l, N);
+  P2Gradients(st, l, dN);
+  for (int d = 0; d < 3; d++) {
+    ts[d] = tt[d] = 0;
+    for (int a = 0; a < 10; a++) {
+      const PetscReal X = a < 4 ? g.x[a][d] : (g.x[EdgeVertex[a - 4][0]][d] + g.x[EdgeVertex[a - 4][1]][d]) / 2;
+      const PetscReal y = X + (sb.follower ? de[3 * a + d] : 0.0);
+      ts[d] += dN[a][0] * y, tt[d] += dN[a][1] * y;
+    }
+  }
+}
+
+/* + int_faces p n . v: the pressure p pushes the wall along -n; n da = sign ts x tt ds dt. */
+static void PressureResidual(const StructureBlock &sb, const P2Face &f, const PetscReal de[30], PetscReal re[30])
+{
+  const CellGeometry &g = sb.cells.geom[f.k];
+  for (PetscInt q = 0; q < sb.faceRule.nq; q++) {
+    PetscReal N[10], dN[10][3], ts[3], tt[3], nda[3];
+    FacePoint(sb, g, f, de, q, N, dN, ts, tt);
+    Cross(ts, tt, nda);
+    const PetscReal w = sb.faceRule.w[q] * sb.pressure * f.sign;
+    for (int a = 0; a < 10; a++)
+      for (int c = 0; c < 3; c++) re[3 * a + c] += w * N[a] * nda[c];
+  }
+}
+
+/* The follower pressure's derivative: d(ts x tt)/d d_bk = dN_b,s e_k x tt + dN_b,t ts x e_k. */
+static void PressureTangent(const StructureBlock &sb, const P2Face &f, const PetscReal de[30], PetscReal K[900])
+{
+  const CellGeometry &g = sb.cells.geom[f.k];
+  for (PetscInt q = 0; q < sb.faceRule.nq; q++) {
+    PetscReal N[10], dN[10][3], ts[3], tt[3];
+    FacePoint(sb, g, f, de, q, N, dN, ts, tt);
+    const PetscReal w = sb.faceRule.w[q] * sb.pressure * f.sign;
+    for (int k = 0; k < 3; k++) {
+      PetscReal ek[3] = {0, 0, 0}, ekxtt[3], tsxek[3];
+      ek[k]           = 1;
+      Cross(ek, tt, ekxtt);
+      Cross(ts, ek, tsxek);
+      for (int a = 0; a < 10; a++)
+        for (int b = 0; b < 10; b++)
+          for (int i = 0; i < 3; i++) K[(3 * a + i) * 30 + 3 * b + k] += w * N[a] * (dN[b][0] * ekxtt[i] + dN[b][1] * tsxek[i]);
+    }
+  }
+}
+
+/* The law's parameters at a reference point: the fibre directions of the arterial wall. */
+static void PointParameters(const StructureBlock &sb, const CellGeometry &g, const PetscReal l[4], PetscReal p[MATERIAL_MAX_PARAM])
+{
+  for (int k = 0; k < MATERIAL_MAX_PARAM; k++) p[k] = sb.param[k];
+  if (sb.fibreAngle >= 0) {
+    PetscReal xq[3];
+    PointOf(g, l, xq);
+    ArterialFibres(xq, sb.fibreAngle, &p[ARTERIAL_FIBRES]);
+  }
+}
+
+/* rho / dt^2: the inertia term is rho M (sum_j c_j d^(n+1-j)) / dt^2 (0 in statics). */
+static PetscReal Inertia(const StructureBlock &sb)
+{
+  return sb.history && !sb.history->past.empty() ? sb.rho / (sb.history->dt * sb.history->dt) : 0.0;
 }
 
 PetscErrorCode StructureResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
 {
-  const StructureBlock &sb = *(StructureBlock *)ctx;
-  PetscSection          section;
+  const StructureBlock      &sb      = *(StructureBlock *)ctx;
+  const PetscReal            inertia = Inertia(sb);
+  const PetscScalar         *x;
+  std::vector<const PetscScalar *> past;
+  PetscScalar               *f;
+  PetscInt                   inverted = 0;
 
   PetscFunctionBegin;
-  PetscInt              inverted = 0;
-
   PetscCall(InsertEssentialValues(dm, 0.0, Xl));
-  PetscCall(DMGetLocalSection(dm, &section));
   PetscCall(VecZeroEntries(Fl));
-  PetscCall(ForEachCell(dm, Xl, sb, [&](PetscInt c, const CellGeometry &g, const PetscInt off[10], const PetscScalar *x, PetscInt n) -> PetscErrorCode {
-    std::vector<PetscScalar> r(n, 0.0), accel(n, 0.0);
-    PetscFunctionBegin;
-    if (sb.inertia) { /* (d - 2 d^n + d^(n-1)) at the nodes of the cell */
-      for (int k = 0; k < 2; k++) {
-        PetscScalar *y = nullptr;
-        PetscInt     m = 0;
-        PetscCall(DMPlexVecGetClosure(dm, section, sb.previous[k], c, &m, &y));
-        for (PetscInt i = 0; i < n; i++) accel[i] += (k == 0 ? -2.0 : 1.0) * y[i];
-        PetscCall(DMPlexVecRestoreClosure(dm, section, sb.previous[k], c, &m, &y));
+  PetscCall(VecGetArrayRead(Xl, &x));
+  PetscCall(VecGetArray(Fl, &f));
+  if (inertia)
+    for (Vec v : sb.history->past) {
+      const PetscScalar *y;
+      PetscCall(VecGetArrayRead(v, &y));
+      past.push_back(y);
+    }
+  for (PetscInt k = 0; k < sb.cells.Size(); k++) {
+    const CellGeometry &g = sb.cells.geom[k];
+    PetscReal           de[30], re[30] = {0};
+    P2Gather(sb.cells, k, x, de);
+    if (inertia) {
+      PetscReal acc[30], y[30];
+      for (int i = 0; i < 30; i++) acc[i] = sb.history->second[0] * de[i];
+      for (size_t j = 0; j < past.size(); j++) {
+        P2Gather(sb.cells, k, past[j], y);
+        for (int i = 0; i < 30; i++) acc[i] += sb.history->second[j + 1] * y[i];
       }
-      for (PetscInt i = 0; i < n; i++) accel[i] += x[i];
+      for (int a = 0; a < 10; a++)
+        for (int b = 0; b < 10; b++)
+          for (int i = 0; i < 3; i++) re[3 * a + i] += inertia * g.detE * sb.mass[a * 10 + b] * acc[3 * b + i];
     }
     for (PetscInt q = 0; q < sb.rule.nq; q++) {
       const PetscReal *l = &sb.rule.lambda[4 * q], *N = &sb.rule.N[10 * q], wq = sb.rule.w[q] * g.detE;
-      PetscReal        dN[10][3], F[9], P[9], b[3] = {0, 0, 0};
+      PetscReal        dN[10][3], F[9], P[9], b[3] = {0, 0, 0}, p[MATERIAL_MAX_PARAM];
       P2Gradients(g, l, dN);
-      if (DeformationGradient(x, off, dN, F) <= 0) { /* inverted: no stress exists, say so below */
+      if (DeformationGradient(de, dN, F) <= 0 && sb.law.finiteStrain) { /* inverted: no stress exists, say so below */
         inverted++;
         continue;
       }
-      sb.law.stress(F, sb.param, P);
+      PointParameters(sb, g, l, p);
+      sb.law.stress(F, p, P);
       if (sb.mms) {
-        const PetscReal xq[3] = {PointOf(g, l, 0), PointOf(g, l, 1), PointOf(g, l, 2)};
-        MMSElasticityDivStress(xq, sb.param[0], sb.param[1], b); /* body force -div sigma */
-        for (int i = 0; i < 3; i++) b[i] = -b[i];
+        PetscReal xq[3];
+        PointOf(g, l, xq);
+        MMSBodyForce(xq, sb.mms, sb.law.tangent, p, b);
       }
-      PetscReal acc[3] = {0, 0, 0};
-      if (sb.inertia)
-        for (int a = 0; a < 10; a++)
-          for (int i = 0; i < 3; i++) acc[i] += sb.inertia * N[a] * PetscRealPart(accel[off[a] + i]);
       for (int a = 0; a < 10; a++)
-        for (int i = 0; i < 3; i++) {
-          PetscReal v = (acc[i] - b[i]) * N[a];
-          for (int j = 0; j < 3; j++) v += P[i * 3 + j] * dN[a][j];
-          r[off[a] + i] += wq * v;
-        }
+        for (int i = 0; i < 3; i++) re[3 * a + i] += wq * (P[i * 3] * dN[a][0] + P[i * 3 + 1] * dN[a][1] + P[i * 3 + 2] * dN[a][2] - b[i] * N[a]);
     }
-    PetscCall(DMPlexVecSetClosure(dm, section, Fl, c, r.data(), ADD_ALL_VALUES));
-    PetscFunctionReturn(0);
-  }));
-  PetscCall(AddPressure(dm, sb, Fl));
+    P2Scatter(sb.cells, k, re, f);
+  }
+  if (sb.pressure != 0)
+    for (const P2Face &face : sb.loaded) {
+      PetscReal de[30], re[30] = {0};
+      P2Gather(sb.cells, face.k, x, de);
+      PressureResidual(sb, face, de, re);
+      P2Scatter(sb.cells, face.k, re, f);
+    }
+  for (size_t j = 0; j < past.size(); j++) PetscCall(VecRestoreArrayRead(sb.history->past[j], &past[j]));
+  PetscCall(VecRestoreArray(Fl, &f));
+  PetscCall(VecRestoreArrayRead(Xl, &x));
   if (inverted) {
     PetscCall(PetscInfo(dm, "%" PetscInt_FMT " quadrature points with det F <= 0: the step is outside the domain of the law\n", inverted));
     if (sb.snes) PetscCall(SNESSetFunctionDomainError(sb.snes));
@@ -171,45 +171,50 @@ PetscErrorCode StructureResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
 
 PetscErrorCode StructureJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
 {
-  const StructureBlock &sb = *(StructureBlock *)ctx;
-  PetscSection          section, global;
+  const StructureBlock &sb   = *(StructureBlock *)ctx;
+  const PetscReal       mass = Inertia(sb) * (sb.history ? sb.history->second[0] : 0.0);
+  const PetscScalar    *x;
 
   PetscFunctionBegin;
   PetscCall(InsertEssentialValues(dm, 0.0, Xl));
-  PetscCall(DMGetLocalSection(dm, &section));
-  PetscCall(DMGetGlobalSection(dm, &global));
   PetscCall(MatZeroEntries(P));
-  PetscCall(ForEachCell(dm, Xl, sb, [&](PetscInt c, const CellGeometry &g, const PetscInt off[10], const PetscScalar *x, PetscInt n) -> PetscErrorCode {
-    std::vector<PetscScalar> K(n * n, 0.0);
-    PetscFunctionBegin;
+  PetscCall(VecGetArrayRead(Xl, &x));
+  for (PetscInt k = 0; k < sb.cells.Size(); k++) {
+    const CellGeometry &g = sb.cells.geom[k];
+    PetscReal           de[30], K[900] = {0};
+    P2Gather(sb.cells, k, x, de);
+    if (mass)
+      for (int a = 0; a < 10; a++)
+        for (int b = 0; b < 10; b++)
+          for (int i = 0; i < 3; i++) K[(3 * a + i) * 30 + 3 * b + i] += mass * g.detE * sb.mass[a * 10 + b];
     for (PetscInt q = 0; q < sb.rule.nq; q++) {
-      const PetscReal *l = &sb.rule.lambda[4 * q], *N = &sb.rule.N[10 * q], wq = sb.rule.w[q] * g.detE;
-      PetscReal        dN[10][3], F[9], A[81], G[10][3][9];
-      if (sb.inertia)
-        for (int a = 0; a < 10; a++)
-          for (int b = 0; b < 10; b++)
-            for (int i = 0; i < 3; i++) K[(off[a] + i) * n + off[b] + i] += wq * sb.inertia * N[a] * N[b];
+      const PetscReal *l = &sb.rule.lambda[4 * q], wq = sb.rule.w[q] * g.detE;
+      PetscReal        dN[10][3], F[9], A[81], G[10][3][9], p[MATERIAL_MAX_PARAM];
       P2Gradients(g, l, dN);
-      if (DeformationGradient(x, off, dN, F) <= 0) continue; /* the residual reported it */
-      sb.law.tangent(F, sb.param, A);
+      if (DeformationGradient(de, dN, F) <= 0 && sb.law.finiteStrain) continue; /* the residual reported it */
+      PointParameters(sb, g, l, p);
+      sb.law.tangent(F, p, A);
       /* G[a][i][k*3+l] = sum_j dN_a,j A_ijkl: then K_(ai)(bk) = sum_l G[a][i][kl] dN_b,l */
       for (int a = 0; a < 10; a++)
         for (int i = 0; i < 3; i++)
-          for (int kl = 0; kl < 9; kl++) {
-            PetscReal s = 0;
-            for (int j = 0; j < 3; j++) s += dN[a][j] * A[(i * 3 + j) * 9 + kl];
-            G[a][i][kl] = wq * s;
-          }
+          for (int kl = 0; kl < 9; kl++) G[a][i][kl] = wq * (dN[a][0] * A[(i * 3) * 9 + kl] + dN[a][1] * A[(i * 3 + 1) * 9 + kl] + dN[a][2] * A[(i * 3 + 2) * 9 + kl]);
       for (int a = 0; a < 10; a++)
         for (int i = 0; i < 3; i++) {
-          PetscScalar *row = &K[(off[a] + i) * n];
+          PetscReal *row = &K[(3 * a + i) * 30];
           for (int b = 0; b < 10; b++)
-            for (int k = 0; k < 3; k++) row[off[b] + k] += G[a][i][k * 3] * dN[b][0] + G[a][i][k * 3 + 1] * dN[b][1] + G[a][i][k * 3 + 2] * dN[b][2];
+            for (int c = 0; c < 3; c++) row[3 * b + c] += G[a][i][c * 3] * dN[b][0] + G[a][i][c * 3 + 1] * dN[b][1] + G[a][i][c * 3 + 2] * dN[b][2];
         }
     }
-    PetscCall(DMPlexMatSetClosure(dm, section, global, P, c, K.data(), ADD_VALUES));
-    PetscFunctionReturn(0);
-  }));
+    PetscCall(MatSetValues(P, 30, &sb.cells.global[30 * k], 30, &sb.cells.global[30 * k], K, ADD_VALUES));
+  }
+  if (sb.follower && sb.pressure != 0)
+    for (const P2Face &face : sb.loaded) {
+      PetscReal de[30], K[900] = {0};
+      P2Gather(sb.cells, face.k, x, de);
+      PressureTangent(sb, face, de, K);
+      PetscCall(MatSetValues(P, 30, &sb.cells.global[30 * face.k], 30, &sb.cells.global[30 * face.k], K, ADD_VALUES));
+    }
+  PetscCall(VecRestoreArrayRead(Xl, &x));
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
   if (J != P) {

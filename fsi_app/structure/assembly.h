@@ -1,26 +1,32 @@
 /* The structure block's residual and Jacobian, assembled cell by cell with the P2 element of
-   discretization/p2tet.h: R(d) = int rho (d - 2 d^n + d^(n-1))/dt^2 . v + int P(F) : grad v
-   - int b . v + int_faces p n . v (fully implicit backward differences in time). */
+   discretization/p2tet.h: R(d) = int rho d_tt . v + int P(F) : grad v - int b . v
+   + int_faces p n . v, with d_tt the fully implicit difference of solver/time_history.h and
+   n the normal of the reference face (dead pressure) or of the deformed one (follower). */
 #pragma once
 
-#include "discretization/p2tet.h"
+#include "discretization/cells.h"
+#include "solver/time_history.h"
 #include "structure/materials.h"
 #include <petscsnes.h>
 
 namespace fsi {
 
 struct StructureBlock {
-  MaterialLaw law;
-  PetscReal   param[2];              /* the law's parameters (see materials.h) */
-  SNES        snes = nullptr;        /* told when a cell is inverted (det F <= 0) */
-  PetscBool   mms = PETSC_FALSE;     /* body force of the manufactured solution */
-  DMLabel     region = nullptr;      /* cells of the wall (value 1), or all cells */
-  P2Rule      rule;
-  FaceRule    faceRule;
-  PetscReal   pressure = 0;          /* dead pressure on the faces of `loaded` (pushes along -n) */
-  PetscReal   inertia = 0;           /* rho / dt^2 (dynamics), 0 for statics */
-  Vec         previous[2] = {nullptr, nullptr}; /* local d^n, d^(n-1): inertia (d - 2 d^n + d^(n-1)) */
-  DMLabel     loaded = nullptr;
+  MaterialLaw        law;
+  PetscReal          param[MATERIAL_MAX_PARAM]; /* the law's parameters (see materials.h) */
+  PetscReal          fibreAngle = -1;            /* >= 0: arterial fibres at this angle (radians) */
+  SNES               snes = nullptr;             /* told when a cell is inverted (det F <= 0) */
+  PetscReal          mms = 0;                    /* amplitude of the manufactured solution (its body force), 0: none */
+  DMLabel            region = nullptr;           /* cells of the wall (value 1), or all cells */
+  P2Cells            cells;                      /* the block's cells, prepared for assembly */
+  P2Rule             rule;                       /* stress and body force */
+  PetscReal          mass[100];                  /* P2 mass matrix of the reference cell (volume 1/6) */
+  FaceRule           faceRule;
+  PetscReal          pressure = 0;               /* on the faces of `loaded` (pushes along -n) */
+  PetscBool          follower = PETSC_FALSE;     /* the pressure follows the deformed face */
+  std::vector<P2Face> loaded;                    /* faces of -structure_pressure_group */
+  PetscReal          rho      = 0;               /* density: inertia when history has past states */
+  const TimeHistory *history  = nullptr;
 };
 
 /* DMSNES local callbacks (the context is the StructureBlock). */

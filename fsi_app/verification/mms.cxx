@@ -2,27 +2,47 @@
 
 namespace fsi {
 
-PetscErrorCode MMSElasticityExact(PetscInt dim, PetscReal, const PetscReal x[], PetscInt nc, PetscScalar *u, void *)
+PetscErrorCode MMSElasticityExact(PetscInt dim, PetscReal, const PetscReal x[], PetscInt nc, PetscScalar *u, void *ctx)
 {
-  PetscReal phi = 1;
+  PetscReal phi = *(const PetscReal *)ctx;
   for (PetscInt d = 0; d < dim; d++) phi *= PetscSinReal(PETSC_PI * x[d]);
   for (PetscInt c = 0; c < nc; c++) u[c] = phi;
   return 0;
 }
 
-/* div sigma = (lambda + mu) grad div d + mu lap d with d_c = phi for every c:
-   lap d_c = -3 pi^2 phi, (grad div d)_j = sum_k d_j d_k phi. */
-void MMSElasticityDivStress(const PetscReal x[3], PetscReal mu, PetscReal lambda, PetscReal div[3])
+void MMSElasticityDerivatives(const PetscReal x[3], PetscReal a, PetscReal G[9], PetscReal H[9])
 {
   const PetscReal pi = PETSC_PI;
-  PetscReal       s[3], co[3], phi = 1;
-  for (int d = 0; d < 3; d++) s[d] = PetscSinReal(pi * x[d]), co[d] = PetscCosReal(pi * x[d]), phi *= s[d];
+  PetscReal       s[3], c[3];
+  for (int d = 0; d < 3; d++) s[d] = PetscSinReal(pi * x[d]), c[d] = PetscCosReal(pi * x[d]);
   for (int j = 0; j < 3; j++) {
-    PetscReal graddiv = -pi * pi * phi;
-    for (int k = 0; k < 3; k++)
-      if (k != j) graddiv += pi * pi * co[j] * co[k] * s[3 - j - k];
-    div[j] = (lambda + mu) * graddiv - 3 * mu * pi * pi * phi;
+    const int k = (j + 1) % 3, l = (j + 2) % 3;
+    for (int i = 0; i < 3; i++) G[i * 3 + j] = a * pi * c[j] * s[k] * s[l];
+    H[j * 3 + j] = -a * pi * pi * s[0] * s[1] * s[2];
+    H[j * 3 + k] = H[k * 3 + j] = a * pi * pi * c[j] * c[k] * s[l];
   }
+}
+
+void MMSBodyForce(const PetscReal x[3], PetscReal a, void (*tangent)(const PetscReal[9], const PetscReal *, PetscReal[81]), const PetscReal *param, PetscReal b[3])
+{
+  PetscReal F[9], H[9], A[81];
+  MMSElasticityDerivatives(x, a, F, H);
+  for (int d = 0; d < 3; d++) F[d * 3 + d] += 1;
+  tangent(F, param, A);
+  for (int i = 0; i < 3; i++) {
+    b[i] = 0;
+    for (int j = 0; j < 3; j++)
+      for (int k = 0; k < 3; k++)
+        for (int l = 0; l < 3; l++) b[i] -= A[((i * 3 + j) * 3 + k) * 3 + l] * H[j * 3 + l];
+  }
+}
+
+void MMSElasticitySolution(const PetscReal x[3], const void *ctx, PetscReal u[3], PetscReal G[9])
+{
+  const PetscReal a = *(const PetscReal *)ctx;
+  PetscReal       H[9];
+  MMSElasticityDerivatives(x, a, G, H);
+  u[0] = u[1] = u[2] = a * PetscSinReal(PETSC_PI * x[0]) * PetscSinReal(PETSC_PI * x[1]) * PetscSinReal(PETSC_PI * x[2]);
 }
 
 Lame LameCylinder(PetscReal E, PetscReal nu, PetscReal p, PetscReal Ri, PetscReal Ro)
@@ -31,13 +51,14 @@ Lame LameCylinder(PetscReal E, PetscReal nu, PetscReal p, PetscReal Ri, PetscRea
   return {c * (1 - 2 * nu), c * Ro * Ro};
 }
 
-PetscErrorCode LameDisplacement(PetscInt, PetscReal, const PetscReal x[], PetscInt nc, PetscScalar *u, void *ctx)
+/* u = (A + B / r^2)(x, y, 0) */
+void LameSolution(const PetscReal x[3], const void *ctx, PetscReal u[3], PetscReal G[9])
 {
   const Lame     *l  = (const Lame *)ctx;
-  const PetscReal r2 = x[0] * x[0] + x[1] * x[1], ur_over_r = l->A + l->B / r2;
-  u[0] = ur_over_r * x[0], u[1] = ur_over_r * x[1];
-  for (PetscInt c = 2; c < nc; c++) u[c] = 0;
-  return 0;
+  const PetscReal r2 = x[0] * x[0] + x[1] * x[1], f = l->A + l->B / r2, g = -2 * l->B / (r2 * r2);
+  u[0] = f * x[0], u[1] = f * x[1], u[2] = 0;
+  for (int k = 0; k < 9; k++) G[k] = 0;
+  G[0] = f + g * x[0] * x[0], G[1] = G[3] = g * x[0] * x[1], G[4] = f + g * x[1] * x[1];
 }
 
 } // namespace fsi

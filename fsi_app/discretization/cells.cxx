@@ -1,0 +1,77 @@
+#include "cells.h"
+#include "mesh/mesh.h"
+#include <algorithm>
+
+namespace fsi {
+
+PetscErrorCode P2CellsCreate(DM dm, DMLabel region, PetscInt field, P2Cells &cells)
+{
+  PetscSection local, global;
+  PetscInt     cStart, cEnd;
+
+  PetscFunctionBegin;
+  PetscCall(DMGetLocalSection(dm, &local));
+  PetscCall(DMGetGlobalSection(dm, &global));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  cells       = P2Cells();
+  cells.field = field;
+  for (PetscInt c = cStart; c < cEnd; c++) {
+    PetscInt v = 1;
+    if (region) PetscCall(DMLabelGetValue(region, c, &v));
+    if (v != 1) continue;
+    CellGeometry g;
+    PetscInt     off[10], pt[10], n, *idx;
+    PetscCall(CellP2(dm, local, c, g, off, nullptr, pt));
+    PetscCall(DMPlexGetClosureIndices(dm, local, global, c, PETSC_TRUE, &n, &idx, nullptr, nullptr));
+    for (int a = 0; a < 10; a++) {
+      PetscInt lo;
+      PetscCall(PetscSectionGetFieldOffset(local, pt[a], field, &lo));
+      cells.local.push_back(lo), cells.point.push_back(pt[a]);
+      for (int i = 0; i < 3; i++) cells.global.push_back(idx[off[a] + i]);
+    }
+    PetscCall(DMPlexRestoreClosureIndices(dm, local, global, c, PETSC_TRUE, &n, &idx, nullptr, nullptr));
+    cells.cell.push_back(c), cells.geom.push_back(g);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode P2FacesCreate(DM dm, const P2Cells &cells, DMLabel label, std::vector<P2Face> &faces)
+{
+  PetscInt vStart, vEnd;
+
+  PetscFunctionBegin;
+  faces.clear();
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(ForEachLabelPoint(label, {}, [&](PetscInt face) -> PetscErrorCode {
+    const PetscInt *support;
+    PetscInt        ns, k = -1, *closure = nullptr, ncl, fv[3], nfv = 0;
+    PetscFunctionBegin;
+    PetscCall(DMPlexGetSupportSize(dm, face, &ns));
+    PetscCall(DMPlexGetSupport(dm, face, &support));
+    for (PetscInt s = 0; s < ns; s++) {
+      auto it = std::lower_bound(cells.cell.begin(), cells.cell.end(), support[s]);
+      if (it != cells.cell.end() && *it == support[s]) k = it - cells.cell.begin();
+    }
+    if (k < 0) PetscFunctionReturn(0); /* not a face of the region, or not a face at all */
+    PetscCall(DMPlexGetTransitiveClosure(dm, face, PETSC_TRUE, &ncl, &closure));
+    for (PetscInt j = 0; j < ncl; j++)
+      if (closure[2 * j] >= vStart && closure[2 * j] < vEnd) fv[nfv++] = closure[2 * j];
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, face, PETSC_TRUE, &ncl, &closure));
+    P2Face           f{k, {0, 0, 0}, 1};
+    const PetscInt  *pt = &cells.point[10 * k];
+    const auto      &x  = cells.geom[k].x;
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 4; b++)
+        if (pt[b] == fv[a]) f.slot[a] = b;
+    const int opposite = 6 - f.slot[0] - f.slot[1] - f.slot[2];
+    PetscReal e1[3], e2[3], out[3];
+    for (int d = 0; d < 3; d++) e1[d] = x[f.slot[1]][d] - x[f.slot[0]][d], e2[d] = x[f.slot[2]][d] - x[f.slot[0]][d], out[d] = x[f.slot[0]][d] - x[opposite][d];
+    const PetscReal n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    f.sign               = n[0] * out[0] + n[1] * out[1] + n[2] * out[2] > 0 ? 1 : -1;
+    faces.push_back(f);
+    PetscFunctionReturn(0);
+  }));
+  PetscFunctionReturn(0);
+}
+
+} // namespace fsi

@@ -1,0 +1,68 @@
+#include "report.h"
+#include <sys/resource.h>
+
+namespace fsi {
+
+PetscErrorCode PhasesBegin()
+{
+  PetscBool active;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogIsActive(&active));
+  if (!active) PetscCall(PetscLogDefaultBegin());
+  PetscFunctionReturn(0);
+}
+
+/* Seconds in event `name` on this rank, main stage; 0 if it never ran. */
+static PetscErrorCode EventTime(const char *name, double *t)
+{
+  PetscLogEvent      id;
+  PetscEventPerfInfo info;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventGetId(name, &id));
+  PetscCall(PetscLogEventGetPerfInfo(0, id, &info));
+  *t = info.time;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PhasesMeasure(MPI_Comm comm, double total, Phases &p)
+{
+  double        t[4], tmax[4];
+  struct rusage u;
+
+  PetscFunctionBegin;
+  PetscCall(EventTime("SNESFunctionEval", &t[0]));
+  PetscCall(EventTime("SNESJacobianEval", &t[1]));
+  PetscCall(EventTime("PCSetUp", &t[2]));
+  PetscCall(EventTime("KSPSolve", &t[3]));
+  PetscCallMPI(MPIU_Allreduce(t, tmax, 4, MPI_DOUBLE, MPI_MAX, comm));
+  p.assembly = tmax[0] + tmax[1], p.setup = tmax[2], p.krylov = tmax[3], p.total = total;
+  getrusage(RUSAGE_SELF, &u);
+  double mib = u.ru_maxrss / 1024.0; /* kB on Linux */
+  PetscCallMPI(MPIU_Allreduce(&mib, &p.peakMiB, 1, MPI_DOUBLE, MPI_SUM, comm));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WriteReport(const char *file, MPI_Comm comm, const RunReport &r)
+{
+  FILE *fp;
+
+  PetscFunctionBegin;
+  PetscCall(PetscFOpen(comm, file, "w", &fp));
+  PetscCall(PetscFPrintf(comm, fp, "{\n  \"unknowns\": {"));
+  for (size_t k = 0; k < r.unknowns.size(); k++) PetscCall(PetscFPrintf(comm, fp, "%s\"%s\": %" PetscInt_FMT, k ? ", " : "", r.unknowns[k].first.c_str(), r.unknowns[k].second));
+  PetscCall(PetscFPrintf(comm, fp, "},\n  \"restarted_at_step\": %" PetscInt_FMT ",\n  \"steps\": [", r.restartedAt));
+  for (size_t k = 0; k < r.steps.size(); k++) {
+    const StepRecord &s = r.steps[k];
+    PetscCall(PetscFPrintf(comm, fp, "%s\n    {\"step\": %" PetscInt_FMT ", \"t\": %.10g, \"newton\": %" PetscInt_FMT ", \"krylov\": %" PetscInt_FMT ", \"cuts\": %" PetscInt_FMT ", \"reason\": \"%s\"}", k ? "," : "", s.step, (double)s.t, s.newton, s.krylov, s.cuts, SNESConvergedReasons[s.reason]));
+  }
+  PetscCall(PetscFPrintf(comm, fp, "\n  ],\n  \"results\": {"));
+  for (size_t k = 0; k < r.results.size(); k++) PetscCall(PetscFPrintf(comm, fp, "%s\"%s\": %.10e", k ? ", " : "", r.results[k].first.c_str(), (double)r.results[k].second));
+  const Phases &p = r.phases;
+  PetscCall(PetscFPrintf(comm, fp, "},\n  \"seconds\": {\"assembly\": %.4f, \"preconditioner_setup\": %.4f, \"krylov\": %.4f, \"total\": %.4f},\n  \"peak_memory_mib\": %.1f\n}\n", p.assembly, p.setup, p.krylov, p.total, p.peakMiB));
+  PetscCall(PetscFClose(comm, fp));
+  PetscFunctionReturn(0);
+}
+
+} // namespace fsi

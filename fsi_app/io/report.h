@@ -1,0 +1,35 @@
+/* What a run did, for people and scripts: time per phase from PETSc's own log events, peak
+   memory, and a JSON report (unknowns, Newton and Krylov iterations per step, results such as
+   errors, phases, memory). */
+#pragma once
+
+#include "solver/time_loop.h"
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fsi {
+
+struct Phases {
+  double assembly = 0; /* residual and Jacobian (SNESFunctionEval + SNESJacobianEval) */
+  double setup    = 0; /* preconditioner set-up (PCSetUp) */
+  double krylov   = 0; /* Krylov iterations (KSPSolve; PCSetUp is not inside it) */
+  double total    = 0; /* the time loop, wall clock */
+  double peakMiB  = 0; /* largest resident set, summed over ranks */
+};
+
+/* Start PETSc's event log if -log_view has not (the phases read it). */
+PetscErrorCode PhasesBegin();
+PetscErrorCode PhasesMeasure(MPI_Comm comm, double total, Phases &p);
+
+struct RunReport {
+  std::vector<std::pair<std::string, PetscInt>>  unknowns;
+  std::vector<std::pair<std::string, PetscReal>> results;
+  std::vector<StepRecord>                        steps;
+  PetscInt                                       restartedAt = -1; /* the checkpoint's step, -1: a fresh run */
+  Phases                                         phases;
+};
+
+PetscErrorCode WriteReport(const char *file, MPI_Comm comm, const RunReport &r);
+
+} // namespace fsi

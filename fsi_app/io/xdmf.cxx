@@ -1,0 +1,192 @@
+#include "xdmf.h"
+#include "discretization/nodes.h"
+#include <petscsf.h>
+#include <petscviewerhdf5.h>
+
+namespace fsi {
+
+/* Tetrahedron_10 (as VTK's quadratic tetrahedron): vertices, then edges 01 12 02 03 13 23. */
+static const int XdmfNode[10] = {0, 1, 2, 3, 4 + 0, 4 + 3, 4 + 1, 4 + 2, 4 + 4, 4 + 5};
+
+/* Call f(point, global node number, owned) for every point that carries the field. */
+template <class F>
+static PetscErrorCode ForEachNode(const XdmfSeries &s, F f)
+{
+  PetscFunctionBegin;
+  for (PetscInt p = 0; p < (PetscInt)s.node.size(); p++)
+    if (s.node[p] >= 0) PetscCall(f(p, s.node[p], (PetscBool)s.owned[p]));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode WriteXdmf(const XdmfSeries &s)
+{
+  PetscMPIInt rank;
+  FILE       *fp;
+  std::string h5 = s.h5.substr(s.h5.find_last_of('/') + 1); /* beside the .xdmf */
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)s.dm), &rank));
+  if (rank) PetscFunctionReturn(0);
+  const std::string tmp = s.xdmf + ".tmp";
+  fp                    = std::fopen(tmp.c_str(), "w");
+  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot write the file", s.xdmf.c_str());
+  std::fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Temporal\">\n", s.name.c_str());
+  for (size_t k = 0; k < s.times.size(); k++) {
+    std::fprintf(fp, "   <Grid Name=\"frame %zu\" GridType=\"Uniform\">\n    <Time Value=\"%.10g\"/>\n", k, (double)s.times[k]);
+    std::fprintf(fp, "    <Topology TopologyType=\"Tetrahedron_10\" NumberOfElements=\"%" PetscInt_FMT "\">\n     <DataItem Dimensions=\"%" PetscInt_FMT " 10\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:/mesh/topology</DataItem>\n    </Topology>\n", s.nCells, s.nCells, (int)sizeof(PetscInt), h5.c_str());
+    std::fprintf(fp, "    <Geometry GeometryType=\"XYZ\">\n     <DataItem Dimensions=\"%" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/mesh/coordinates</DataItem>\n    </Geometry>\n", s.nNodes, h5.c_str());
+    std::fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"Vector\" Center=\"Node\">\n     <DataItem Dimensions=\"%" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/fields/%s_%zu</DataItem>\n    </Attribute>\n   </Grid>\n", s.name.c_str(), s.nNodes, h5.c_str(), s.name.c_str(), k);
+  }
+  std::fprintf(fp, "  </Grid>\n </Domain>\n</Xdmf>\n");
+  std::fclose(fp);
+  PetscCheck(std::rename(tmp.c_str(), s.xdmf.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: cannot rename %s", s.xdmf.c_str(), tmp.c_str());
+  PetscFunctionReturn(0);
+}
+
+/* The global numbering of the field's nodes: each rank numbers the node points it owns after
+   those of lower ranks, and the point SF sends the numbers to the ranks that see them as ghosts. */
+static PetscErrorCode NumberNodes(XdmfSeries &s)
+{
+  MPI_Comm          comm = PetscObjectComm((PetscObject)s.dm);
+  PetscSection      local;
+  PetscSF           sf;
+  PetscInt          pStart, pEnd, nleaves, owned = 0, first = 0;
+  const PetscInt   *leaves;
+
+  PetscFunctionBegin;
+  PetscCall(DMGetLocalSection(s.dm, &local));
+  PetscCall(DMPlexGetChart(s.dm, &pStart, &pEnd));
+  PetscCall(DMGetPointSF(s.dm, &sf));
+  PetscCall(PetscSFGetGraph(sf, nullptr, &nleaves, &leaves, nullptr));
+  s.owned.assign(pEnd, 1);
+  for (PetscInt l = 0; l < nleaves; l++) s.owned[leaves ? leaves[l] : l] = 0;
+  s.node.assign(pEnd, -1);
+  for (PetscInt p = pStart; p < pEnd; p++) {
+    PetscInt dof;
+    PetscCall(PetscSectionGetFieldDof(local, p, s.cells->field, &dof));
+    if (dof && s.owned[p]) s.node[p] = owned++;
+  }
+  PetscCallMPI(MPI_Exscan(&owned, &first, 1, MPIU_INT, MPI_SUM, comm));
+  for (PetscInt &n : s.node)
+    if (n >= 0) n += first;
+  std::vector<PetscInt> sent(s.node);
+  PetscCall(PetscSFBcastBegin(sf, MPIU_INT, sent.data(), s.node.data(), MPI_REPLACE));
+  PetscCall(PetscSFBcastEnd(sf, MPIU_INT, sent.data(), s.node.data(), MPI_REPLACE));
+  PetscCall(VecCreateMPI(comm, 3 * owned, PETSC_DETERMINE, &s.values));
+  PetscCall(VecSetBlockSize(s.values, 3));
+  PetscCall(VecGetSize(s.values, &s.nNodes));
+  s.nNodes /= 3;
+  PetscFunctionReturn(0);
+}
+
+/* Node coordinates and the Tetrahedron_10 connectivity in global node numbers. */
+static PetscErrorCode MeshData(XdmfSeries &s, Vec *coordinates, IS *topology)
+{
+  MPI_Comm comm = PetscObjectComm((PetscObject)s.dm);
+  Vec      coords;
+  PetscInt rStart;
+
+  PetscFunctionBegin;
+  PetscCall(VecDuplicate(s.values, &coords));
+  PetscCall(PetscObjectSetName((PetscObject)coords, "coordinates"));
+  PetscCall(VecGetOwnershipRange(coords, &rStart, nullptr));
+  PetscScalar *xa;
+  PetscCall(VecGetArray(coords, &xa));
+  PetscCall(ForEachNode(s, [&](PetscInt p, PetscInt node, PetscBool own) -> PetscErrorCode {
+    PetscReal y[3];
+    PetscFunctionBegin;
+    if (own) {
+      PetscCall(NodePosition(s.dm, p, y));
+      for (int d = 0; d < 3; d++) xa[3 * node - rStart + d] = y[d];
+    }
+    PetscFunctionReturn(0);
+  }));
+  PetscCall(VecRestoreArray(coords, &xa));
+
+  std::vector<PetscInt> conn;
+  for (PetscInt k = 0; k < s.cells->Size(); k++)
+    for (int a = 0; a < 10; a++) conn.push_back(s.node[s.cells->point[10 * k + XdmfNode[a]]]);
+  PetscInt nc = (PetscInt)conn.size() / 10;
+  PetscCallMPI(MPIU_Allreduce(&nc, &s.nCells, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCall(ISCreateGeneral(comm, (PetscInt)conn.size(), conn.data(), PETSC_COPY_VALUES, topology));
+  PetscCall(ISSetBlockSize(*topology, 10));
+  PetscCall(PetscObjectSetName((PetscObject)*topology, "topology"));
+  *coordinates = coords;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode XdmfOpen(const char *file, DM dm, const P2Cells &cells, const char *name, const std::vector<PetscReal> &times, XdmfSeries &s)
+{
+  PetscViewer viewer;
+  Vec         coords;
+  IS          topology;
+  std::string f = file;
+
+  PetscFunctionBegin;
+  PetscCheck(f.size() > 5 && f.substr(f.size() - 5) == ".xdmf", PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_WRONG, "-output %s: name the file <name>.xdmf (the data go to <name>.h5)", file);
+  s.xdmf = f, s.h5 = f.substr(0, f.size() - 5) + ".h5", s.name = name, s.dm = dm, s.cells = &cells, s.times = times;
+  PetscCall(NumberNodes(s));
+  PetscCall(MeshData(s, &coords, &topology));
+  if (times.empty()) { /* a restart finds the mesh in the file */
+    PetscCall(PetscViewerHDF5Open(PetscObjectComm((PetscObject)dm), s.h5.c_str(), FILE_MODE_WRITE, &viewer));
+    PetscCall(PetscViewerHDF5PushGroup(viewer, "/mesh"));
+    PetscCall(VecView(coords, viewer));
+    PetscCall(ISView(topology, viewer));
+    PetscCall(PetscViewerHDF5PopGroup(viewer));
+    PetscCall(PetscViewerDestroy(&viewer));
+  } else PetscCall(WriteXdmf(s));
+  PetscCall(ISDestroy(&topology));
+  PetscCall(VecDestroy(&coords));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode XdmfWriteFrame(XdmfSeries &s, PetscReal t, Vec x)
+{
+  PetscViewer        viewer;
+  PetscSection       local;
+  Vec                xl;
+  PetscInt           rStart;
+  PetscScalar       *va;
+  const PetscScalar *xa;
+  char               dataset[256];
+
+  PetscFunctionBegin;
+  PetscCall(DMGetLocalSection(s.dm, &local));
+  PetscCall(DMGetLocalVector(s.dm, &xl));
+  PetscCall(DMGlobalToLocal(s.dm, x, INSERT_VALUES, xl));
+  PetscCall(InsertEssentialValues(s.dm, t, xl));
+  PetscCall(VecGetOwnershipRange(s.values, &rStart, nullptr));
+  PetscCall(VecGetArray(s.values, &va));
+  PetscCall(VecGetArrayRead(xl, &xa));
+  PetscCall(ForEachNode(s, [&](PetscInt p, PetscInt node, PetscBool own) -> PetscErrorCode {
+    PetscInt off;
+    PetscFunctionBegin;
+    if (own) {
+      PetscCall(PetscSectionGetFieldOffset(local, p, s.cells->field, &off));
+      for (int d = 0; d < 3; d++) va[3 * node - rStart + d] = xa[off + d];
+    }
+    PetscFunctionReturn(0);
+  }));
+  PetscCall(VecRestoreArrayRead(xl, &xa));
+  PetscCall(VecRestoreArray(s.values, &va));
+  PetscCall(DMRestoreLocalVector(s.dm, &xl));
+  PetscCall(PetscSNPrintf(dataset, sizeof(dataset), "%s_%zu", s.name.c_str(), s.times.size()));
+  PetscCall(PetscObjectSetName((PetscObject)s.values, dataset));
+  PetscCall(PetscViewerHDF5Open(PetscObjectComm((PetscObject)s.dm), s.h5.c_str(), FILE_MODE_APPEND, &viewer));
+  PetscCall(PetscViewerHDF5PushGroup(viewer, "/fields"));
+  PetscCall(VecView(s.values, viewer));
+  PetscCall(PetscViewerHDF5PopGroup(viewer));
+  PetscCall(PetscViewerDestroy(&viewer));
+  s.times.push_back(t);
+  PetscCall(WriteXdmf(s));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode XdmfClose(XdmfSeries &s)
+{
+  PetscFunctionBegin;
+  PetscCall(VecDestroy(&s.values));
+  PetscFunctionReturn(0);
+}
+
+} // namespace fsi

@@ -1,0 +1,77 @@
+#include "scene.h"
+
+namespace fsi {
+
+std::vector<std::string> SplitList(const char *s)
+{
+  std::vector<std::string> out;
+  for (std::string r = s; !r.empty();) {
+    const size_t k = r.find(',');
+    out.push_back(r.substr(0, k));
+    r = k == std::string::npos ? "" : r.substr(k + 1);
+  }
+  return out;
+}
+
+PetscErrorCode ReadScene(Scene &sc)
+{
+  PetscInt  n;
+  PetscBool set;
+
+  PetscFunctionBegin;
+  PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "fsi_app scene", nullptr);
+  PetscCall(PetscOptionsString("-mesh", "gmsh mesh file", nullptr, sc.mesh, sc.mesh, sizeof(sc.mesh), nullptr));
+  PetscCall(PetscOptionsInt("-refine", "uniform refinements of the mesh after distribution", nullptr, sc.refine, &sc.refine, nullptr));
+  PetscCall(PetscOptionsString("-structure_region", "physical group of the wall's cells (empty: every cell)", nullptr, sc.region, sc.region, sizeof(sc.region), nullptr));
+  PetscCall(PetscOptionsString("-structure_clamp", "groups of faces where the displacement is zero, comma separated; group:xz fixes only those components", nullptr, sc.clamp, sc.clamp, sizeof(sc.clamp), nullptr));
+  PetscCall(PetscOptionsReal("-structure_pressure", "pressure on the faces of -structure_pressure_group (dyn/cm^2)", nullptr, sc.pressure, &sc.pressure, nullptr));
+  PetscCall(PetscOptionsString("-structure_pressure_group", "group of faces the pressure acts on", nullptr, sc.loaded, sc.loaded, sizeof(sc.loaded), nullptr));
+  PetscCall(PetscOptionsBool("-structure_pressure_follower", "the pressure acts on the deformed face (follower load) rather than the reference one", nullptr, sc.follower, &sc.follower, nullptr));
+  PetscCall(PetscOptionsReal("-structure_pressure_ramp", "the pressure rises smoothly (sin^2) from 0 over this time (s); 0: a step at t = 0", nullptr, sc.ramp, &sc.ramp, nullptr));
+  PetscCall(PetscOptionsReal("-structure_pressure_until", "the pressure acts while t <= this (s); 0: always", nullptr, sc.pulseEnd, &sc.pulseEnd, nullptr));
+  PetscCall(PetscOptionsEnum("-material", "constitutive law of the wall", nullptr, MaterialNames, (PetscEnum)sc.material, (PetscEnum *)&sc.material, nullptr));
+  PetscCall(PetscOptionsReal("-E", "Young's modulus (linear elastic)", nullptr, sc.E, &sc.E, nullptr));
+  PetscCall(PetscOptionsReal("-nu", "Poisson ratio (linear elastic)", nullptr, sc.nu, &sc.nu, nullptr));
+  PetscCall(PetscOptionsReal("-nh_mu", "Neo-Hooke shear modulus (dyn/cm^2)", nullptr, sc.mu, &sc.mu, nullptr));
+  PetscCall(PetscOptionsReal("-nh_kappa", "Neo-Hooke bulk modulus (dyn/cm^2)", nullptr, sc.kappa, &sc.kappa, nullptr));
+  n = 5;
+  PetscCall(PetscOptionsRealArray("-arterial", "arterial wall c1,eps1,eps2,alpha1,alpha2 (dyn/cm^2 for c1, eps1, alpha1)", nullptr, sc.arterial, &n, &set));
+  PetscCheck(!set || n == 5, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-arterial: give all five of c1,eps1,eps2,alpha1,alpha2 (got %" PetscInt_FMT ")", n);
+  PetscCall(PetscOptionsReal("-arterial_fibre_angle", "angle of the two fibre families from the circumferential direction (degrees)", nullptr, sc.fibreAngle, &sc.fibreAngle, nullptr));
+  PetscCall(PetscOptionsReal("-structure_density", "density of the wall (g/cm^3)", nullptr, sc.rho, &sc.rho, nullptr));
+  PetscCall(PetscOptionsInt("-structure_degree", "polynomial degree of the displacement", nullptr, sc.degree, &sc.degree, nullptr));
+  PetscCall(PetscOptionsInt("-structure_subdomains", "GDSW subdomains per rank (METIS on the rank's cells)", nullptr, sc.subdomains, &sc.subdomains, nullptr));
+  PetscCall(PetscOptionsReal("-dt", "time step (s); 0 solves the static problem", nullptr, sc.dt, &sc.dt, nullptr));
+  PetscCall(PetscOptionsReal("-t_final", "end time (s)", nullptr, sc.tFinal, &sc.tFinal, nullptr));
+  PetscCall(PetscOptionsEnum("-time_scheme", "differences in time for the inertia", nullptr, TimeSchemeNames, (PetscEnum)sc.scheme, (PetscEnum *)&sc.scheme, nullptr));
+  PetscCall(PetscOptionsInt("-structure_load_steps", "apply the load in this many equal increments (statics)", nullptr, sc.loadSteps, &sc.loadSteps, nullptr));
+  PetscCall(PetscOptionsInt("-max_step_cuts", "a failed step (Newton diverged, element inverted) is halved up to this many times before the run stops", nullptr, sc.maxCuts, &sc.maxCuts, nullptr));
+  PetscCall(PetscOptionsBool("-mms", "manufactured solution d = a sin(pi x)sin(pi y)sin(pi z)(1,1,1) on the unit cube", nullptr, sc.mms, &sc.mms, nullptr));
+  PetscCall(PetscOptionsReal("-mms_amplitude", "the amplitude a of the manufactured solution", nullptr, sc.mmsAmplitude, &sc.mmsAmplitude, nullptr));
+  n = 2;
+  PetscCall(PetscOptionsRealArray("-lame", "verification against Lame's cylinder: inner,outer radius", nullptr, sc.lameRadii, &n, nullptr));
+  PetscCall(PetscOptionsString("-output", "XDMF file of the solution over time (+ .h5 beside it); empty: none", nullptr, sc.output, sc.output, sizeof(sc.output), nullptr));
+  PetscCall(PetscOptionsInt("-output_every", "write every n-th step", nullptr, sc.outputEvery, &sc.outputEvery, nullptr));
+  PetscCall(PetscOptionsString("-checkpoint", "checkpoint file (PETSc binary); empty: none", nullptr, sc.checkpoint, sc.checkpoint, sizeof(sc.checkpoint), nullptr));
+  PetscCall(PetscOptionsInt("-checkpoint_every", "write the checkpoint every n-th step", nullptr, sc.checkpointEvery, &sc.checkpointEvery, nullptr));
+  PetscCall(PetscOptionsString("-restart", "continue from this checkpoint (same mesh, options and number of ranks)", nullptr, sc.restart, sc.restart, sizeof(sc.restart), nullptr));
+  PetscCall(PetscOptionsString("-report", "run report (JSON): unknowns, iterations per step, errors, time per phase, memory; empty: none", nullptr, sc.report, sc.report, sizeof(sc.report), nullptr));
+  PetscOptionsEnd();
+  PetscCheck(sc.E > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-E %g: Young's modulus must be positive", (double)sc.E);
+  PetscCheck(sc.nu > -1 && sc.nu < 0.5, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-nu %g: the Poisson ratio must lie in (-1, 0.5)", (double)sc.nu);
+  PetscCheck(sc.mu > 0 && sc.kappa > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-nh_mu %g -nh_kappa %g: both moduli must be positive", (double)sc.mu, (double)sc.kappa);
+  PetscCheck(sc.arterial[0] > 0 && sc.arterial[1] > 0 && sc.arterial[2] > 1 && sc.arterial[3] >= 0 && sc.arterial[4] >= 2, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
+             "-arterial %g,%g,%g,%g,%g: need c1 > 0, eps1 > 0, eps2 > 1, alpha1 >= 0, alpha2 >= 2 (polyconvexity and a C2 energy)", (double)sc.arterial[0], (double)sc.arterial[1], (double)sc.arterial[2], (double)sc.arterial[3], (double)sc.arterial[4]);
+  PetscCheck(sc.fibreAngle >= 0 && sc.fibreAngle <= 90, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-arterial_fibre_angle %g: degrees in [0, 90]", (double)sc.fibreAngle);
+  PetscCheck(sc.degree >= 1 && sc.degree <= 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_degree %" PetscInt_FMT ": use 1, 2 or 3", sc.degree);
+  PetscCheck(sc.dt >= 0 && (sc.dt == 0 || sc.tFinal >= sc.dt), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-dt %g -t_final %g: need 0 <= dt <= t_final", (double)sc.dt, (double)sc.tFinal);
+  PetscCheck(sc.ramp >= 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_pressure_ramp %g: must be >= 0", (double)sc.ramp);
+  PetscCheck(sc.rho > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_density %g: must be positive", (double)sc.rho);
+  PetscCheck(sc.loadSteps >= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_load_steps %" PetscInt_FMT ": at least 1", sc.loadSteps);
+  PetscCheck(sc.maxCuts >= 0 && sc.maxCuts <= 20, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-max_step_cuts %" PetscInt_FMT ": between 0 and 20", sc.maxCuts);
+  PetscCheck(sc.subdomains >= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_subdomains %" PetscInt_FMT ": at least 1", sc.subdomains);
+  PetscCheck(sc.outputEvery >= 1 && sc.checkpointEvery >= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-output_every %" PetscInt_FMT " -checkpoint_every %" PetscInt_FMT ": at least 1", sc.outputEvery, sc.checkpointEvery);
+  PetscFunctionReturn(0);
+}
+
+} // namespace fsi

@@ -1,0 +1,51 @@
+/* A scene: every application option, read once, checked, with its default (-help lists them). */
+#pragma once
+
+#include "solver/time_history.h"
+#include "structure/materials.h"
+#include <string>
+#include <vector>
+
+namespace fsi {
+
+struct Scene {
+  /* mesh */
+  char     mesh[PETSC_MAX_PATH_LEN] = "meshes/cube_L0.msh";
+  PetscInt refine                   = 0;
+  /* structure */
+  char      region[64] = "";  /* group of the structure's cells ("" all) */
+  char      clamp[256] = "";  /* groups with d = 0 (group:xz fixes components) */
+  PetscReal pressure   = 0;   /* on the faces of group `loaded` */
+  char      loaded[64] = "interface";
+  PetscBool follower   = PETSC_FALSE;
+  PetscReal pulseEnd   = 0;   /* the pressure acts for t <= pulseEnd (0: always) */
+  PetscReal ramp       = 0;   /* the pressure rises as sin^2(pi t / 2 ramp) until t = ramp (0: at once) */
+  Material  material   = LINEAR_ELASTIC;
+  PetscReal E = 1.0, nu = 0.3;                            /* linear elastic */
+  PetscReal mu = 7.72e4, kappa = 3.833e6;                 /* Neo-Hooke (dyn/cm^2) */
+  PetscReal arterial[5] = {1.75e5, 4.998e6, 2.4, 3.00019e8, 5.1}; /* c1, eps1, eps2, alpha1, alpha2 */
+  PetscReal fibreAngle  = 43.39;                          /* degrees from circumferential */
+  PetscReal rho         = 1.2;
+  PetscInt  degree = 2, subdomains = 1;
+  /* time, or load increments in statics */
+  PetscReal  dt = 0, tFinal = 0.01;
+  PetscInt   loadSteps = 1, maxCuts = 4;
+  TimeScheme scheme    = BACKWARD_EULER;
+  /* verification */
+  PetscBool mms          = PETSC_FALSE;
+  PetscReal mmsAmplitude = 1;
+  PetscReal lameRadii[2] = {0, 0};
+  /* files */
+  char     output[PETSC_MAX_PATH_LEN] = "", checkpoint[PETSC_MAX_PATH_LEN] = "", restart[PETSC_MAX_PATH_LEN] = "", report[PETSC_MAX_PATH_LEN] = "";
+  PetscInt outputEvery = 1, checkpointEvery = 10;
+
+  PetscBool Dynamic() const { return (PetscBool)(dt > 0); }
+  PetscInt  Steps() const { return Dynamic() ? (PetscInt)PetscCeilReal(tFinal / dt - 1e-9) : loadSteps; }
+};
+
+PetscErrorCode ReadScene(Scene &sc);
+
+/* "a,b:xz" -> {"a", "b:xz"} */
+std::vector<std::string> SplitList(const char *s);
+
+} // namespace fsi

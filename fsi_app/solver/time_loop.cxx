@@ -1,0 +1,75 @@
+#include "time_loop.h"
+
+namespace fsi {
+
+/* A Jacobian set up once for good (lag -1: a linear operator) must be rebuilt when dt changes. */
+static PetscErrorCode RebuildLaggedOperator(SNES snes)
+{
+  PetscInt lag;
+
+  PetscFunctionBegin;
+  PetscCall(SNESGetLagJacobian(snes, &lag));
+  if (lag == -1) PetscCall(SNESSetLagJacobian(snes, -2));
+  PetscCall(SNESGetLagPreconditioner(snes, &lag));
+  if (lag == -1) PetscCall(SNESSetLagPreconditioner(snes, -2));
+  PetscFunctionReturn(0);
+}
+
+/* From t to t + h.dt; on failure, two halves on the past states refined to h.dt / 2, after
+   which the past states of step h.dt are shifted by the result. */
+static PetscErrorCode Advance(const TimeLoop &loop, PetscReal t, PetscInt depth, Vec x, StepRecord &rec, PetscBool *ok)
+{
+  TimeHistory    &h  = *loop.history;
+  const PetscReal dt = h.dt;
+  Vec             x0;
+  PetscInt        n, k;
+
+  PetscFunctionBegin;
+  PetscCall(VecDuplicate(x, &x0));
+  PetscCall(VecCopy(x, x0));
+  PetscCall(loop.setTime(t + dt));
+  PetscCall(SNESSolve(loop.snes, nullptr, x));
+  PetscCall(SNESGetIterationNumber(loop.snes, &n));
+  PetscCall(SNESGetLinearSolveIterations(loop.snes, &k));
+  PetscCall(SNESGetConvergedReason(loop.snes, &rec.reason));
+  rec.newton += n, rec.krylov += k;
+  *ok = (PetscBool)(rec.reason > 0);
+  if (*ok) PetscCall(TimeHistoryPush(h, x, t + dt));
+  else if (depth < loop.maxCuts) {
+    TimeHistory saved;
+    PetscCall(PetscInfo(loop.snes, "step from t = %g with dt = %g failed (%s): two halves\n", (double)t, (double)dt, SNESConvergedReasons[rec.reason]));
+    rec.cuts++;
+    PetscCall(VecCopy(x0, x));
+    PetscCall(TimeHistoryDuplicate(h, saved));
+    PetscCall(TimeHistoryRefine(h, 2));
+    PetscCall(RebuildLaggedOperator(loop.snes));
+    PetscCall(Advance(loop, t, depth + 1, x, rec, ok));
+    if (*ok) PetscCall(Advance(loop, t + dt / 2, depth + 1, x, rec, ok));
+    PetscCall(TimeHistoryCopy(saved, h));
+    PetscCall(TimeHistoryDestroy(saved));
+    PetscCall(RebuildLaggedOperator(loop.snes));
+    if (*ok) PetscCall(TimeHistoryPush(h, x, t + dt));
+  }
+  PetscCall(VecDestroy(&x0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunTimeLoop(const TimeLoop &loop, PetscInt first, Vec x, std::vector<StepRecord> &records)
+{
+  PetscFunctionBegin;
+  for (PetscInt step = first + 1; step <= loop.steps; step++) {
+    StepRecord rec;
+    PetscBool  ok;
+    rec.step = step, rec.t = step * loop.history->dt;
+    PetscCall(Advance(loop, (step - 1) * loop.history->dt, 0, x, rec, &ok));
+    records.push_back(rec);
+    if (loop.steps > 1 || rec.cuts)
+      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s %" PetscInt_FMT "/%" PetscInt_FMT " t %.4e newton %" PetscInt_FMT " krylov %" PetscInt_FMT " %s%s\n", loop.dynamic ? "step" : "load step", step, loop.steps, (double)rec.t, rec.newton, rec.krylov,
+                            SNESConvergedReasons[rec.reason], rec.cuts ? " (after halving the step)" : ""));
+    if (!ok) break;
+    PetscCall(loop.afterStep(step, rec.t, x));
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace fsi

@@ -1,0 +1,35 @@
+/* The loop over time steps (dynamics) or load increments (statics), one nonlinear solve each.
+   A step that fails (Newton diverged, an element inverted, the linear solver failed) is retried
+   as two half steps, recursively up to a limit, with the time scheme's past states
+   interpolated to the finer step; the outer steps keep their size, so output times and
+   checkpoints do not depend on the cuts. */
+#pragma once
+
+#include "solver/time_history.h"
+#include <functional>
+#include <petscsnes.h>
+#include <vector>
+
+namespace fsi {
+
+struct StepRecord {
+  PetscInt            step = 0;
+  PetscReal           t    = 0;
+  PetscInt            newton = 0, krylov = 0, cuts = 0; /* summed over every attempt */
+  SNESConvergedReason reason = SNES_CONVERGED_ITERATING;
+};
+
+struct TimeLoop {
+  SNES                                       snes;
+  TimeHistory                               *history; /* h.dt is the step; no past states in statics */
+  PetscInt                                   steps, maxCuts;
+  PetscBool                                  dynamic;
+  std::function<PetscErrorCode(PetscReal t)> setTime;   /* loads at time (or load fraction) t */
+  std::function<PetscErrorCode(PetscInt step, PetscReal t, Vec x)> afterStep; /* output, checkpoints */
+};
+
+/* Steps first+1 .. loop.steps from state x at step `first`; one record per step attempted.
+   Stops at the first step that fails after every cut (its record has reason < 0). */
+PetscErrorCode RunTimeLoop(const TimeLoop &loop, PetscInt first, Vec x, std::vector<StepRecord> &records);
+
+} // namespace fsi

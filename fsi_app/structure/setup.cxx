@@ -1,0 +1,96 @@
+#include "setup.h"
+#include "discretization/fields.h"
+#include "verification/mms.h"
+
+namespace fsi {
+
+static PetscErrorCode ZeroDisplacement(PetscInt, PetscReal, const PetscReal[], PetscInt nc, PetscScalar *u, void *)
+{
+  for (PetscInt c = 0; c < nc; c++) u[c] = 0;
+  return 0;
+}
+
+/* d = 0 on each group of -structure_clamp, on the listed components only with group:xz */
+static PetscErrorCode AddClamps(const Scene &sc, DM dm, PetscInt field)
+{
+  PetscFunctionBegin;
+  for (const auto &spec : SplitList(sc.clamp)) {
+    const std::string     g = spec.substr(0, spec.find(':'));
+    std::vector<PetscInt> comps; /* empty: all */
+    if (spec.find(':') != std::string::npos)
+      for (char c : spec.substr(spec.find(':') + 1)) {
+        PetscCheck(c == 'x' || c == 'y' || c == 'z', PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_clamp %s: components are x, y, z", spec.c_str());
+        comps.push_back(c - 'x');
+      }
+    DMLabel         group;
+    IS              values;
+    PetscInt        nv;
+    const PetscInt *v;
+    PetscCall(DMGetLabel(dm, g.c_str(), &group));
+    PetscCall(DMLabelGetValueIS(group, &values));
+    PetscCall(ISGetLocalSize(values, &nv));
+    PetscCall(ISGetIndices(values, &v));
+    std::vector<PetscInt> ids(v, v + nv);
+    PetscCall(ISRestoreIndices(values, &v));
+    PetscCall(ISDestroy(&values));
+    PetscInt any = nv, gany;
+    PetscCallMPI(MPIU_Allreduce(&any, &gany, 1, MPIU_INT, MPI_MAX, PETSC_COMM_WORLD));
+    if (ids.empty() && gany) ids.push_back(0); /* the label's value lives on other ranks */
+    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, spec.c_str(), group, (PetscInt)ids.size(), ids.data(), field, (PetscInt)comps.size(), comps.empty() ? nullptr : comps.data(), (void (*)(void))ZeroDisplacement, nullptr, nullptr, nullptr));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb, PetscInt *field)
+{
+  PetscFunctionBegin;
+  PetscCheck(sc.degree == 2, PETSC_COMM_WORLD, PETSC_ERR_SUP, "-structure_degree %" PetscInt_FMT ": the element loops are P2 (use 2)", sc.degree);
+  PetscCall(AddLagrangeField(dm, "displacement", sc.region, 3, sc.degree, field));
+  PetscCall(DMCreateDS(dm));
+  PetscCall(GetMaterialLaw(sc.material, &sb.law));
+  switch (sc.material) {
+  case LINEAR_ELASTIC:
+    sb.param[0] = sc.E / (2 * (1 + sc.nu)), sb.param[1] = sc.E * sc.nu / ((1 + sc.nu) * (1 - 2 * sc.nu));
+    break;
+  case NEO_HOOKE:
+    sb.param[0] = sc.mu, sb.param[1] = sc.kappa;
+    break;
+  case ARTERIAL:
+    for (int k = 0; k < 5; k++) sb.param[k] = sc.arterial[k];
+    sb.fibreAngle = sc.fibreAngle * PETSC_PI / 180;
+    break;
+  }
+  sb.mms = sc.mms ? sc.mmsAmplitude : 0.0;
+  if (sc.region[0]) PetscCall(DMGetLabel(dm, (std::string("region_") + sc.region).c_str(), &sb.region));
+  /* affine P2 stiffness: degree 2 (exact for the linear law); the trigonometric load: more */
+  PetscCall(CreateP2Rule(sc.mms ? 5 : 2, sb.rule));
+  PetscCall(CreateP2Mass(sb.mass));
+  PetscCall(CreateFaceRule(sc.follower ? 4 : 2, sb.faceRule)); /* P2 times the normal: constant (dead) or quadratic (follower) */
+  sb.follower = sc.follower;
+  sb.rho      = sc.rho;
+  if (sc.mms) {
+    DMLabel        boundary;
+    const PetscInt one = 1;
+    PetscCall(DMGetLabel(dm, "boundary", &boundary));
+    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, "boundary", boundary, 1, &one, *field, 0, nullptr, (void (*)(void))MMSElasticityExact, nullptr, (void *)&sc.mmsAmplitude, nullptr));
+  }
+  PetscCall(AddClamps(sc, dm, *field));
+  PetscCall(P2CellsCreate(dm, sb.region, *field, sb.cells)); /* after the constraints: they set the global indices */
+  if (sc.pressure != 0) {
+    DMLabel loaded;
+    PetscCall(DMGetLabel(dm, sc.loaded, &loaded));
+    PetscCall(P2FacesCreate(dm, sb.cells, loaded, sb.loaded));
+  }
+  PetscCall(DMSNESSetFunctionLocal(dm, StructureResidual, &sb));
+  PetscCall(DMSNESSetJacobianLocal(dm, StructureJacobian, &sb));
+  PetscFunctionReturn(0);
+}
+
+PetscReal StructurePressure(const Scene &sc, PetscReal t)
+{
+  if (!sc.Dynamic()) return sc.pressure * t;
+  if (sc.pulseEnd > 0 && t > sc.pulseEnd + 1e-12) return 0.0;
+  return t < sc.ramp ? sc.pressure * PetscSqr(PetscSinReal(PETSC_PI * t / (2 * sc.ramp))) : sc.pressure;
+}
+
+} // namespace fsi
