@@ -61,7 +61,7 @@ METHODS = {
 DIRECT = {"MUMPS (direct)"}
 
 # gdsw's default subdomains per rank (pc_gdsw/src/decomposition.cxx): about this many dofs each
-DOFS_PER_SUBDOMAIN = 4000
+DOFS_PER_SUBDOMAIN = 40000
 
 
 def default_subdomains(dofs_per_rank):

@@ -11,7 +11,7 @@ static const char help[] = "Q1 linear elasticity on the unit cube, clamped at x 
                            "  -floating          no Dirichlet condition (the null space is attached to the operator)\n"
                            "  -check_phi         report how well the coarse basis reproduces the rigid-body modes\n"
                            "  -resolve_jump <0>  then reassemble with this -jump (same pattern) and solve again\n"
-                           "  -mat_type <aij>    any assembled type (aij, baij, sbaij)\n";
+                           "  -mat_type <aij>    any assembled type (aij, baij, sbaij), or is (MATIS: each rank's element layers are its subdomain, for PCBDDC)\n";
 
 #include <petscgdsw.h>
 #include <petscksp.h>
@@ -83,6 +83,27 @@ static PetscErrorCode Assemble(const Problem &p, Mat A, Vec b)
   PetscCall(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
   PetscCall(VecAssemblyBegin(b));
   PetscCall(VecAssemblyEnd(b));
+  PetscFunctionReturn(0);
+}
+
+/* MATIS: the local matrix of a rank is assembled from its own element layers, whose nodes
+   (layers k0 .. min(k1, n)) are its local-to-global map. Other types need nothing here. */
+static PetscErrorCode SubassembledLayout(const Problem &p, Mat A)
+{
+  PetscBool isIS;
+
+  PetscFunctionBegin;
+  PetscCall(PetscObjectTypeCompare((PetscObject)A, MATIS, &isIS));
+  if (!isIS) PetscFunctionReturn(0);
+  const PetscInt        kEnd = std::min(p.k1, p.n), plane = (p.n + 1) * (p.n + 1);
+  std::vector<PetscInt> nodes;
+  for (PetscInt k = p.k0; p.k0 < kEnd && k <= kEnd; k++) /* a rank without elements holds no nodes */
+    for (PetscInt q = 0; q < plane; q++) nodes.push_back(k * plane + q);
+  ISLocalToGlobalMapping l2g;
+  PetscCall(ISLocalToGlobalMappingCreate(PETSC_COMM_WORLD, 3, (PetscInt)nodes.size(), nodes.data(), PETSC_COPY_VALUES, &l2g));
+  PetscCall(MatSetLocalToGlobalMapping(A, l2g, l2g));
+  PetscCall(ISLocalToGlobalMappingDestroy(&l2g));
+  PetscCall(MatISSetPreallocation(A, 81, nullptr, 0, nullptr));
   PetscFunctionReturn(0);
 }
 
@@ -232,6 +253,7 @@ int main(int argc, char **argv)
   PetscCall(MatSetBlockSize(A, 3));
   PetscCall(MatSetType(A, MATAIJ));
   PetscCall(MatSetFromOptions(A));
+  PetscCall(SubassembledLayout(p, A));
   PetscCall(MatSeqAIJSetPreallocation(A, 81, nullptr));
   PetscCall(MatMPIAIJSetPreallocation(A, 81, nullptr, 81, nullptr));
   PetscCall(MatSeqBAIJSetPreallocation(A, 3, 27, nullptr));

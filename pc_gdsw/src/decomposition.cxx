@@ -6,6 +6,7 @@
 #include <petscmat.h>
 #include <metis.h>
 #include <algorithm>
+#include <cmath>
 
 using gdsw::Subdomain;
 
@@ -139,16 +140,19 @@ static PetscErrorCode AlgebraicSubdomains(PC pc, std::vector<std::vector<PetscIn
   PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
   PetscCall(MatGetOwnershipRange(A, &rstart, &rend));
   PetscCall(BuildLocalGraph(A, bs, g));
-  PetscCall(PartitionNodes(g, gd->nsubPerRank, part));
   const PetscInt nn = (rend - rstart) / bs, n0 = rstart / bs;
+  /* the size rule (bench/results/gdsw_subdomains_per_rank): local solves of about subdomainSize
+     dofs balance their factorisation cost against the coarse problem's growth */
+  const PetscInt requested = gd->nsubPerRank != PETSC_DECIDE ? gd->nsubPerRank : std::max<PetscInt>(1, (PetscInt)std::lround((double)(rend - rstart) / gd->subdomainSize));
+  PetscCall(PartitionNodes(g, requested, part));
 
   /* drop empty parts, then number the rest globally */
-  std::vector<PetscInt> renum(std::max<PetscInt>(gd->nsubPerRank, nn) + 1, -1);
+  std::vector<PetscInt> renum(std::max<PetscInt>(requested, nn) + 1, -1);
   PetscInt nparts = 0;
   for (PetscInt a = 0; a < nn; a++)
     if (renum[part[a]] < 0) renum[part[a]] = nparts++;
   for (PetscInt a = 0; a < nn; a++) part[a] = renum[part[a]];
-  if (nparts < gd->nsubPerRank) PetscCall(PetscInfo(pc, "%" PetscInt_FMT " of %" PetscInt_FMT " requested subdomains on this rank are empty and dropped\n", gd->nsubPerRank - nparts, gd->nsubPerRank));
+  if (nparts < requested) PetscCall(PetscInfo(pc, "%" PetscInt_FMT " of %" PetscInt_FMT " requested subdomains on this rank are empty and dropped\n", requested - nparts, requested));
   PetscCallMPI(MPI_Scan(&nparts, &first, 1, MPIU_INT, MPI_SUM, comm));
   first -= nparts;
 
@@ -252,7 +256,7 @@ PetscErrorCode GDSWBuildDecomposition(PC pc)
     PetscInt               n;
     const PetscInt        *idx;
     IS                     is;
-    PetscCheck(gd->nsubPerRank == 1, comm, PETSC_ERR_SUP, "PCGDSW: -pc_gdsw_subdomains %" PetscInt_FMT " is not available for a MATIS operator, whose local-to-global map defines one subdomain per rank; use 1 or an AIJ operator", gd->nsubPerRank);
+    PetscCheck(gd->nsubPerRank == 1 || gd->nsubPerRank == PETSC_DECIDE, comm, PETSC_ERR_SUP, "PCGDSW: -pc_gdsw_subdomains %" PetscInt_FMT " is not available for a MATIS operator, whose local-to-global map defines one subdomain per rank; use 1 or an AIJ operator", gd->nsubPerRank);
     PetscCall(MatISGetLocalToGlobalMapping(pc->pmat, &l2g, nullptr));
     PetscCall(ISLocalToGlobalMappingGetSize(l2g, &n));
     PetscCall(ISLocalToGlobalMappingGetIndices(l2g, &idx));
@@ -265,6 +269,8 @@ PetscErrorCode GDSWBuildDecomposition(PC pc)
   }
   PetscInt nloc = (PetscInt)gd->sub->size();
   PetscCallMPI(MPIU_Allreduce(&nloc, &gd->nGlobalSubdomains, 1, MPIU_INT, MPI_SUM, comm));
+  gd->nsubRank0 = nloc;
+  PetscCallMPI(MPI_Bcast(&gd->nsubRank0, 1, MPIU_INT, 0, comm));
   PetscCheck(gd->nGlobalSubdomains > 0, comm, PETSC_ERR_ARG_WRONG, "PCGDSW: the decomposition has no nonempty subdomain");
 
   /* overlapping subdomains: the caller's, or graph layers around P_i (algebraic) or Omega~_i */

@@ -253,8 +253,12 @@ static PetscErrorCode PCSetFromOptions_GDSW(PC pc, PetscOptionItems *PetscOption
   PetscFunctionBegin;
   PetscOptionsHeadBegin(PetscOptionsObject, "GDSW two-level overlapping Schwarz options");
   n = gd->nsubPerRank;
-  PetscCall(PetscOptionsInt("-pc_gdsw_subdomains", "Subdomains per MPI rank (METIS on the rank's node graph)", "PCGDSWSetSubdomainsPerRank", n, &n, &flg));
+  PetscCall(PetscOptionsInt("-pc_gdsw_subdomains", "Subdomains per MPI rank (METIS on the rank's node graph); -1 (PETSC_DECIDE): about -pc_gdsw_subdomain_size dofs each", "PCGDSWSetSubdomainsPerRank", n, &n, &flg));
   if (flg) PetscCall(PCGDSWSetSubdomainsPerRank(pc, n));
+  n = gd->subdomainSize;
+  PetscCall(PetscOptionsInt("-pc_gdsw_subdomain_size", "Target dofs per subdomain when -pc_gdsw_subdomains is not given (the fastest on 3D elasticity here)", "", n, &n, &flg));
+  PetscCheck(n >= 1, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: -pc_gdsw_subdomain_size %" PetscInt_FMT " is out of range: give the target number of dofs per subdomain, at least 1", n);
+  gd->subdomainSize = n;
   n = gd->overlap;
   PetscCall(PetscOptionsInt("-pc_gdsw_overlap", "Overlap in layers of the matrix graph (used when the caller gives no overlapping subdomains)", "PCGDSWSetOverlap", n, &n, &flg));
   if (flg) PetscCall(PCGDSWSetOverlap(pc, n));
@@ -278,13 +282,18 @@ static PetscErrorCode PCView_GDSW(PC pc, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPrintf(viewer, "  coarse space %s%s, %s combination, %s first level\n", PCGDSWCoarseSpaceTypes[gd->coarseType],
                                    gd->coarseType != PC_GDSW_COARSE_NONE && !gd->rotations ? " without rotations" : "", PCGDSWCombinationTypes[gd->combination], PCGDSWFirstLevelTypes[gd->firstLevel]));
   if (!pc->setupcalled) {
-    PetscCall(PetscViewerASCIIPrintf(viewer, "  subdomains per rank %" PetscInt_FMT ", overlap %" PetscInt_FMT " (not set up yet)\n", gd->nsubPerRank, gd->overlap));
+    if (gd->nsubPerRank == PETSC_DECIDE) PetscCall(PetscViewerASCIIPrintf(viewer, "  subdomains per rank: chosen at setup for about %" PetscInt_FMT " dofs each, overlap %" PetscInt_FMT " (not set up yet)\n", gd->subdomainSize, gd->overlap));
+    else PetscCall(PetscViewerASCIIPrintf(viewer, "  subdomains per rank %" PetscInt_FMT ", overlap %" PetscInt_FMT " (not set up yet)\n", gd->nsubPerRank, gd->overlap));
     PetscFunctionReturn(0);
   }
   const char *source = gd->nUser >= 0 ? "given by the application" : "from the matrix graph";
   PetscBool   isIS;
   PetscCall(PetscObjectTypeCompare((PetscObject)pc->pmat, MATIS, &isIS));
   if (isIS && gd->nUser < 0) source = "from the MATIS local-to-global map";
+  if (!isIS && gd->nUser < 0) {
+    if (gd->nsubPerRank == PETSC_DECIDE) PetscCall(PetscViewerASCIIPrintf(viewer, "  subdomains per rank: chosen by the size rule, about %" PetscInt_FMT " dofs each (-pc_gdsw_subdomain_size): %" PetscInt_FMT " on rank 0\n", gd->subdomainSize, gd->nsubRank0));
+    else PetscCall(PetscViewerASCIIPrintf(viewer, "  subdomains per rank: %" PetscInt_FMT ", given (-pc_gdsw_subdomains)\n", gd->nsubPerRank));
+  }
   PetscCall(PetscViewerASCIIPrintf(viewer, "  %" PetscInt_FMT " subdomains (%s), overlap %s, %" PetscInt_FMT " dofs per node, %" PetscInt_FMT " null-space vectors%s\n", gd->nGlobalSubdomains, source,
                                    gd->nUser >= 0 && gd->userOvl ? "given by the application" : (std::to_string(gd->overlap) + " graph layers").c_str(), gd->bs, gd->nz, gd->haveCoords ? " (rigid modes from coordinates)" : ""));
   PetscCall(PetscViewerASCIIPrintf(viewer, "  interface components: %" PetscInt_FMT " faces, %" PetscInt_FMT " edges, %" PetscInt_FMT " vertices; %" PetscInt_FMT " Dirichlet dofs excluded\n", gd->counts[0], gd->counts[1], gd->counts[2], gd->nDirichletRows));
@@ -360,7 +369,7 @@ PetscErrorCode PCGDSWSetSubdomainsPerRank(PC pc, PetscInt n)
 
   PetscFunctionBegin;
   if (!gd) PetscFunctionReturn(0);
-  PetscCheck(n >= 1, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: -pc_gdsw_subdomains %" PetscInt_FMT " is out of range: give the number of subdomains per MPI rank, at least 1", n);
+  PetscCheck(n >= 1 || n == PETSC_DECIDE, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: -pc_gdsw_subdomains %" PetscInt_FMT " is out of range: give the number of subdomains per MPI rank, at least 1, or -1 (PETSC_DECIDE) for about -pc_gdsw_subdomain_size dofs each", n);
   gd->nsubPerRank = n;
   PetscFunctionReturn(0);
 }
@@ -443,7 +452,8 @@ PetscErrorCode PCGDSWGetInterfaceCounts(PC pc, PetscInt *faces, PetscInt *edges,
    PCGDSW - two-level overlapping Schwarz with an energy-minimising (GDSW or RGDSW) coarse space.
 
    Options Database Keys:
-+  -pc_gdsw_subdomains <1> - subdomains per MPI rank (METIS on the rank's node graph)
++  -pc_gdsw_subdomains <-1> - subdomains per MPI rank (METIS on the rank's node graph); -1 (PETSC_DECIDE): the size rule
+.  -pc_gdsw_subdomain_size <40000> - the size rule's target dofs per subdomain
 .  -pc_gdsw_overlap <1> - overlap in layers of the matrix graph
 .  -pc_gdsw_coarse_space <gdsw,rgdsw,none> - coarse space
 .  -pc_gdsw_rotations <true> - false gives GDSW-nr (translations only)
@@ -461,7 +471,8 @@ PETSC_EXTERN PetscErrorCode PCCreate_GDSW(PC pc)
   PetscFunctionBegin;
   PetscCall(PetscNew(&gd));
   pc->data             = gd;
-  gd->nsubPerRank      = 1;
+  gd->nsubPerRank      = PETSC_DECIDE;
+  gd->subdomainSize    = 40000;
   gd->overlap          = 1;
   gd->coarseType       = PC_GDSW_COARSE_GDSW;
   gd->combination      = PC_GDSW_ADDITIVE;

@@ -60,7 +60,8 @@ struct Subdomain {
 
 typedef struct {
   /* options */
-  PetscInt              nsubPerRank;      /* -pc_gdsw_subdomains */
+  PetscInt              nsubPerRank;      /* -pc_gdsw_subdomains, or PETSC_DECIDE: the size rule */
+  PetscInt              subdomainSize;    /* -pc_gdsw_subdomain_size: target dofs per subdomain of the rule */
   PetscInt              overlap;          /* -pc_gdsw_overlap */
   PCGDSWCoarseSpaceType coarseType;
   PCGDSWCombinationType combination;
@@ -82,6 +83,7 @@ typedef struct {
   std::vector<gdsw::Subdomain> *sub;
   std::vector<std::vector<PetscInt>> *sets; /* distinct sharing sets seen on this rank */
   PetscInt  nGlobalSubdomains;
+  PetscInt  nsubRank0;                    /* subdomains on rank 0, for the view */
   PetscSF   nodeSF;                       /* leaves: nodes of every local Omega~_i; roots: owned nodes */
   PetscInt  nDirichletRows;               /* global count */
   PetscInt  counts[3];                    /* faces, edges, vertices (global) */
