@@ -101,8 +101,9 @@ def measure(cmd, timeout):
     elif re.search(r"out of memory|Out of memory|OOM|Killed", out):
         status = "out of memory"
     elif "PETSc ERROR" in out or "exited on signal" in out or not reason:
-        err = re.search(r"PETSc ERROR: (.*\S)", out)
-        status = "error: " + (err.group(1)[:100] if err else out.strip().splitlines()[-1][:100] if out.strip() else "no output")
+        # PETSc's error class and message: the first two lines of its report that are not rules
+        said = [m for m in re.findall(r"PETSC ERROR: (.*\S)", out) if not m.startswith("---")][:2]
+        status = "error: " + (": ".join(said) if said else out.strip().splitlines()[-1] if out.strip() else "no output")[:120]
     elif not reason.group(1).startswith("CONVERGED"):
         status = "diverged " + reason.group(1)
     else:
@@ -142,7 +143,7 @@ def scaling():
     """Iterations vs subdomains at H/h = 4: gdsw box subdomains on 2 ranks (b^3 of them, several
     per rank); PETSc's GDSW and gdsw on ex71's MATIS (one subdomain per rank, p^3 ranks)."""
     rows, cmds = [], []
-    for b in (2, 3) if quick else (2, 3, 4, 5, 6):
+    for b in (2,) if quick else (2, 3, 4, 5, 6):
         runs = {name: f"mpiexec -n 2 {ELASTICITY} -n {4 * b} -boxes {b} {KRYLOV} -ksp_converged_reason {opts}"
                 for name, opts in (("GDSW (2 ranks, box subdomains)", "-pc_type gdsw"),
                                    ("RGDSW (2 ranks, box subdomains)", "-pc_type gdsw -pc_gdsw_coarse_space rgdsw"))}

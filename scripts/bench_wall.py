@@ -1,0 +1,87 @@
+#!/usr/bin/python3
+"""The seed's Table 2 in kind, for the wall alone (structure-only proxy of the FSI scene): tube #1
+wall, clamped rings, the seed's inflow pressure 0.133 kPa inside for t <= 3 ms; for each material
+and time step: Newton steps per time step, Krylov iterations per Newton step, and the time per
+step split into assembly, preconditioner set-up and Krylov iterations (from the run's JSON
+report), with the structure preconditioned by
+  GDSW (element subdomains, overlap 1), GDSW-nr (no rotations), OS1 (the same subdomains, no
+  coarse level), PCASM (algebraic, one block per rank, overlap 1), GAMG (rigid-body modes).
+2 MPI ranks. CG for the linear law, GMRES for the others, rtol 1e-6; Newton rtol/atol 1e-8.
+  scripts/bench_wall.py proxy [T]  tube1_L0 (12,240 dofs), every material and dt 1e-4, 5e-4, up to
+                                   T (default 0.003 s): bench/results/wall_proxy.{csv,cmd}
+  scripts/bench_wall.py seed [N]   tube1 at the seed's Table 1 size (357,927 dofs, made on
+                                   demand), Neo-Hooke, dt 5e-4, N steps (default 1), peak memory:
+                                   bench/results/wall_seed.{csv,cmd}"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+from benchlib import run, write_results
+
+top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+app = os.path.join(os.environ.get("GDSW_BUILD", os.path.join(top, "build")), "fsi_app", "fsi_app")
+
+PCS = {
+    "GDSW": "-pc_type gdsw",
+    "GDSW-nr": "-pc_type gdsw -pc_gdsw_rotations 0",
+    "OS1": "-pc_type gdsw -pc_gdsw_coarse_space none",
+    "PCASM": "-pc_type asm -pc_asm_overlap 1 -pc_asm_type basic -sub_pc_type cholesky -sub_pc_factor_mat_solver_type cholmod",
+    "GAMG": "-pc_type gamg -pc_gamg_threshold 0.01 -mg_levels_ksp_max_it 2",
+}
+MATERIALS = {"linear": "-material linear -E 4e5 -nu 0.3 -snes_type ksponly -ksp_type cg",
+             "neohooke": "-material neohooke -snes_type newtonls -ksp_type gmres",
+             "arterial": "-material arterial -snes_type newtonls -ksp_type gmres"}
+
+
+def measure(mesh, material, dt, T, pc, subdomains):
+    """One run; its report as a table row (times per step and per Newton step)."""
+    report = os.path.join(tempfile.mkdtemp(), "r.json")
+    cmd = (f"mpiexec -n 2 {app} -options_file {top}/scenes/wall_tube1_pulse.opts -mesh {mesh} -dt {dt} -t_final {T} "
+           f"-structure_subdomains {subdomains} {MATERIALS[material]} -snes_rtol 1e-8 -snes_atol 1e-8 -ksp_rtol 1e-6 {PCS[pc]} "
+           f"-report {report}")
+    log = run(cmd, timeout=3600)
+    row = {"material": material, "dt": dt, "preconditioner": pc}
+    if not os.path.exists(report):
+        print(log[-2000:])
+        return dict(row, newton_per_step="failed"), cmd
+    r = json.load(open(report))
+    steps = r["steps"]
+    newton = sum(s["newton"] for s in steps)
+    sec = r["seconds"]
+    row.update(dofs=r["unknowns"]["structure"], steps=len(steps), newton_per_step=round(newton / len(steps), 2),
+               krylov_per_newton=round(sum(s["krylov"] for s in steps) / max(newton, 1), 1),
+               time_per_step_s=round(sec["total"] / len(steps), 3), assembly_per_step_s=round(sec["assembly"] / len(steps), 3),
+               setup_per_step_s=round(sec["preconditioner_setup"] / len(steps), 3), krylov_per_step_s=round(sec["krylov"] / len(steps), 3),
+               assembly_share=round(sec["assembly"] / sec["total"], 3), peak_memory_mib=r["peak_memory_mib"],
+               converged=all(s["reason"].startswith("CONVERGED") for s in steps))
+    return row, cmd
+
+
+def main():
+    mode = sys.argv[1] if len(sys.argv) > 1 else "proxy"
+    rows, cmds = [], []
+    load = subprocess.run(["uptime"], stdout=subprocess.PIPE, text=True).stdout.strip()
+    if mode == "proxy":
+        T = sys.argv[2] if len(sys.argv) > 2 else "0.003"
+        cases = [(os.path.join(top, "meshes", "tube1_L0.msh"), m, dt, T, pc, 8) for m in MATERIALS for dt in ("1e-4", "5e-4") for pc in PCS]
+    elif mode == "seed":
+        steps = int(sys.argv[2]) if len(sys.argv) > 2 else 1
+        mesh = os.path.join(top, "meshes", "tube1_seed.msh")
+        if not os.path.exists(mesh):
+            subprocess.run([os.path.join(top, "scripts", "make-meshes"), "tube1", "seed"], check=True)
+        cases = [(mesh, "neohooke", "5e-4", str(5e-4 * steps), pc, 64) for pc in ("GDSW", "OS1", "PCASM", "GAMG")]
+    else:
+        sys.exit(__doc__)
+    for case in cases:
+        row, cmd = measure(*case)
+        print(row, flush=True)
+        rows.append(row)
+        cmds.append(cmd)
+    load += " / after: " + subprocess.run(["uptime"], stdout=subprocess.PIPE, text=True).stdout.strip()
+    write_results(os.path.join(top, "bench", "results", "wall_" + mode), rows, cmds, f"scripts/bench_wall.py {' '.join(sys.argv[1:])} (load: {load})")
+
+
+if __name__ == "__main__":
+    main()
