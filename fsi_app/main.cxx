@@ -156,6 +156,13 @@ int main(int argc, char **argv)
   if (dynamic) PetscCall(PetscSNPrintf(cure, sizeof(cure), "reduce the time step (-dt %g now) or allow more halvings (-max_step_cuts %" PetscInt_FMT " now)", (double)sc.dt, sc.maxCuts));
   else PetscCall(PetscSNPrintf(cure, sizeof(cure), "apply the load in more increments (-structure_load_steps %" PetscInt_FMT " now) or allow more halvings (-max_step_cuts %" PetscInt_FMT " now)", sc.loadSteps, sc.maxCuts));
   PetscCheck(reason != SNES_DIVERGED_FUNCTION_DOMAIN, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton stopped in step %" PetscInt_FMT ": an element inverted (det F <= 0) in every step the line search tried, also on the step halved %" PetscInt_FMT " times; %s", solved ? report.steps.back().step : 0, sc.maxCuts, cure);
+  if (reason == SNES_DIVERGED_LINEAR_SOLVE) {
+    KSP                ksp;
+    KSPConvergedReason kreason;
+    PetscCall(SNESGetKSP(snes, &ksp));
+    PetscCall(KSPGetConvergedReason(ksp, &kreason));
+    SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "the linear solver failed in step %" PetscInt_FMT " (%s, also on the step halved %" PetscInt_FMT " times); see -ksp_monitor_true_residual: CG needs a symmetric preconditioner (PCASM: -pc_asm_type basic), a looser -ksp_rtol or a stronger preconditioner may be needed", report.steps.back().step, KSPConvergedReasons[kreason], sc.maxCuts);
+  }
   PetscCheck(reason >= 0, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton did not converge in step %" PetscInt_FMT " (%s, also on the step halved %" PetscInt_FMT " times); see -snes_monitor, or %s", solved ? report.steps.back().step : 0, SNESConvergedReasons[reason], sc.maxCuts, cure);
   PetscReal dnorm;
   PetscCall(VecNorm(d, NORM_2, &dnorm));

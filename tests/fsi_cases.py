@@ -177,10 +177,14 @@ def structure_neohooke():
 @case
 def structure_large_load():
     """A pressure above the shear modulus in one step: Newton stops with a message that names
-    the cure, exit status nonzero, and no NaN printed."""
+    the cure, exit status nonzero, and no NaN printed. CG with a nonsymmetric preconditioner
+    (PCASM's restricted default) stops with a message that says so."""
     out = run([APP, "-mesh", os.path.join(MESHES, "cube_L0.msh"), "-material", "neohooke", "-structure_pressure", 1e5] + CUBE_LOAD, 1, fail=True)
     assert "apply the load in more increments (-structure_load_steps 1 now)" in out
     assert "nan" not in out.lower().replace("nonzero", "")
+    out = run([APP, "-options_file", os.path.join(MESHES, "..", "scenes", "lame_cylinder.opts"), "-mesh", os.path.join(MESHES, "quarter_cylinder_L0.msh"),
+               "-pc_type", "asm", "-ksp_max_it", 200, "-max_step_cuts", 1], 2, fail=True)
+    assert "the linear solver failed in step 1 (DIVERGED_ITS, also on the step halved 1 times)" in out and "-pc_asm_type basic" in out
 
 
 @case
