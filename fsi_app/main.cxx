@@ -32,10 +32,7 @@ static PetscErrorCode CreateMesh(const Scene &sc, DM *dm)
     PetscCall(DMDestroy(dm));
     *dm = fine;
   }
-  PetscCall(DMCreateLabel(*dm, "boundary"));
-  DMLabel boundary;
-  PetscCall(DMGetLabel(*dm, "boundary", &boundary));
-  PetscCall(DMPlexMarkBoundaryFaces(*dm, 1, boundary));
+  PetscCall(MarkBoundaryFaces(*dm, "boundary"));
   PetscFunctionReturn(0);
 }
 

@@ -94,6 +94,11 @@ def structure_mms_rate():
         between(l2[0], 1.8, 3.3, f"{law} L2 rate, refinements 0 -> 1")
         between(h1[1], 1.8, 2.3, f"{law} H1 rate, refinements 1 -> 2")
         assert r[2]["l2_relative"] < 2e-3, r[2]
+    # 2 ranks: the same unknowns (the boundary is not where the ranks' parts meet) and error
+    two = solve("-options_file", os.path.join(MESHES, "..", "scenes", "mms_elasticity_cube.opts"), "-mesh", os.path.join(MESHES, "cube_L0.msh"), "-refine", 1, np=2)
+    one = solve("-options_file", os.path.join(MESHES, "..", "scenes", "mms_elasticity_cube.opts"), "-mesh", os.path.join(MESHES, "cube_L0.msh"), "-refine", 1)
+    assert one["unknowns"] == two["unknowns"] == {"structure": "2295", "fluid": "0", "pressure": "0", "geometry": "0", "multiplier": "0"}, (one, two)
+    between(two["l2"] / one["l2"], 1 - 1e-6, 1 + 1e-6, "2 ranks / 1 rank L2 error")
 
 
 @case

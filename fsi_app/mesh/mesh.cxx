@@ -130,4 +130,32 @@ PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vecto
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode MarkBoundaryFaces(DM dm, const char *name)
+{
+  PetscSF         sf;
+  PetscInt        fStart, fEnd, pStart, pEnd, nleaves;
+  const PetscInt *leaves, *degree;
+  DMLabel         label;
+
+  PetscFunctionBegin;
+  PetscCall(DMCreateLabel(dm, name));
+  PetscCall(DMGetLabel(dm, name, &label));
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  PetscCall(DMPlexGetHeightStratum(dm, 1, &fStart, &fEnd));
+  PetscCall(DMGetPointSF(dm, &sf));
+  PetscCall(PetscSFGetGraph(sf, nullptr, &nleaves, &leaves, nullptr));
+  std::vector<char> shared(pEnd - pStart, 0);
+  for (PetscInt l = 0; l < nleaves; l++) shared[(leaves ? leaves[l] : l) - pStart] = 1;
+  PetscCall(PetscSFComputeDegreeBegin(sf, &degree));
+  PetscCall(PetscSFComputeDegreeEnd(sf, &degree));
+  for (PetscInt p = pStart; p < pEnd && nleaves >= 0; p++)
+    if (degree[p - pStart]) shared[p - pStart] = 1;
+  for (PetscInt f = fStart; f < fEnd; f++) {
+    PetscInt ns;
+    PetscCall(DMPlexGetSupportSize(dm, f, &ns));
+    if (ns == 1 && !shared[f - pStart]) PetscCall(DMLabelSetValue(label, f, 1));
+  }
+  PetscFunctionReturn(0);
+}
+
 } // namespace fsi

@@ -45,6 +45,11 @@ PetscErrorCode ForEachLabelPoint(DMLabel label, const std::vector<PetscInt> &val
   PetscFunctionReturn(0);
 }
 
+/* Label `name` (value 1) on the faces of the mesh's boundary: one cell on their side and not
+   shared with another rank (PETSc 3.18's DMPlexMarkBoundaryFaces also marks the faces between
+   ranks' parts). */
+PetscErrorCode MarkBoundaryFaces(DM dm, const char *name);
+
 /* Global number of points of depth `depth` (3: cells, 2: faces, 0: vertices) in label `name`. */
 PetscErrorCode CountLabel(DM dm, const std::string &name, PetscInt depth, PetscInt *count);
 
