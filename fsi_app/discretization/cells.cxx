@@ -4,38 +4,60 @@
 
 namespace fsi {
 
-PetscErrorCode P2CellsCreate(DM dm, DMLabel region, PetscInt field, P2Cells &cells)
+PetscErrorCode FieldCellsCreate(DM dm, DMLabel region, PetscInt field, FieldCells &cells)
 {
   PetscSection local, global;
-  PetscInt     cStart, cEnd;
+  PetscInt     cStart, cEnd, nf;
 
   PetscFunctionBegin;
   PetscCall(DMGetLocalSection(dm, &local));
   PetscCall(DMGetGlobalSection(dm, &global));
+  PetscCall(PetscSectionGetNumFields(local, &nf));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
-  cells       = P2Cells();
+  cells       = FieldCells();
   cells.field = field;
+  PetscCall(PetscSectionGetFieldComponents(local, field, &cells.nc));
   for (PetscInt c = cStart; c < cEnd; c++) {
     PetscInt v = 1;
     if (region) PetscCall(DMLabelGetValue(region, c, &v));
     if (v != 1) continue;
     CellGeometry g;
-    PetscInt     off[10], pt[10], n, *idx;
+    PetscInt     off[10], pt[10], n, *idx, ncl, *closure = nullptr;
     PetscCall(CellP2(dm, local, c, g, off, nullptr, pt));
+    /* closure indices are field-major: field f's block starts after the other fields' dofs of
+       the whole closure; within it, each point's dofs of f in closure order */
+    std::vector<PetscInt> start(nf + 1, 0);
+    std::vector<std::pair<PetscInt, PetscInt>> within; /* (point, offset in field's block) */
+    PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &ncl, &closure));
+    for (PetscInt j = 0; j < ncl; j++)
+      for (PetscInt f = 0; f < nf; f++) {
+        PetscInt dof;
+        PetscCall(PetscSectionGetFieldDof(local, closure[2 * j], f, &dof));
+        if (f == field) within.push_back({closure[2 * j], start[f + 1]});
+        start[f + 1] += dof;
+      }
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &ncl, &closure));
+    for (PetscInt f = 0; f < nf; f++) start[f + 1] += start[f];
+    PetscInt edgeDofs;
+    PetscCall(PetscSectionGetFieldDof(local, pt[4], field, &edgeDofs));
+    cells.nodes = edgeDofs ? 10 : 4;
     PetscCall(DMPlexGetClosureIndices(dm, local, global, c, PETSC_TRUE, &n, &idx, nullptr, nullptr));
-    for (int a = 0; a < 10; a++) {
-      PetscInt lo;
+    for (PetscInt a = 0; a < cells.nodes; a++) {
+      PetscInt lo, at = -1;
       PetscCall(PetscSectionGetFieldOffset(local, pt[a], field, &lo));
-      cells.local.push_back(lo), cells.point.push_back(pt[a]);
-      for (int i = 0; i < 3; i++) cells.global.push_back(idx[off[a] + i]);
+      for (const auto &w : within)
+        if (w.first == pt[a]) at = start[field] + w.second;
+      cells.local.push_back(lo);
+      for (PetscInt i = 0; i < cells.nc; i++) cells.global.push_back(idx[at + i]);
     }
     PetscCall(DMPlexRestoreClosureIndices(dm, local, global, c, PETSC_TRUE, &n, &idx, nullptr, nullptr));
+    cells.point.insert(cells.point.end(), pt, pt + 10);
     cells.cell.push_back(c), cells.geom.push_back(g);
   }
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode P2FacesCreate(DM dm, const P2Cells &cells, DMLabel label, std::vector<P2Face> &faces)
+PetscErrorCode CellFacesCreate(DM dm, const FieldCells &cells, DMLabel label, std::vector<CellFace> &faces)
 {
   PetscInt vStart, vEnd;
 
@@ -57,7 +79,7 @@ PetscErrorCode P2FacesCreate(DM dm, const P2Cells &cells, DMLabel label, std::ve
     for (PetscInt j = 0; j < ncl; j++)
       if (closure[2 * j] >= vStart && closure[2 * j] < vEnd) fv[nfv++] = closure[2 * j];
     PetscCall(DMPlexRestoreTransitiveClosure(dm, face, PETSC_TRUE, &ncl, &closure));
-    P2Face           f{k, {0, 0, 0}, 1};
+    CellFace           f{k, {0, 0, 0}, 1};
     const PetscInt  *pt = &cells.point[10 * k];
     const auto      &x  = cells.geom[k].x;
     for (int a = 0; a < 3; a++)

@@ -1,54 +1,56 @@
-/* The cells of one P2 vector field on a region, prepared once: geometry, where each node's
-   three values sit in a local vector, and the global indices of the cell's 30 dofs for matrix
-   assembly (negative where constrained: MatSetValues skips them). Every later loop is plain
-   array access: PETSc's closure queries per cell and evaluation cost more than the kernels.
-   Dof 3a + i is component i of node a (node order of p2tet.h). */
+/* The cells of one field on a region, prepared once: geometry, where each node's values sit in
+   a local vector, and the global indices of the cell's dofs of this field for matrix assembly
+   (negative where constrained: MatSetValues skips them). Every later loop is plain array
+   access: PETSc's closure queries per cell and evaluation cost more than the kernels.
+   P2 fields have 10 nodes (p2tet.h order), P1 fields 4 (the vertices); dof nc a + i is
+   component i of node a. */
 #pragma once
 
 #include "discretization/p2tet.h"
 
 namespace fsi {
 
-struct P2Cells {
-  PetscInt                  field = 0;
+struct FieldCells {
+  PetscInt                  field = 0, nodes = 10, nc = 3;
   std::vector<PetscInt>     cell;   /* mesh cells, sorted */
   std::vector<CellGeometry> geom;
-  std::vector<PetscInt>     local;  /* 10 per cell: local-vector offset of node a's first dof */
-  std::vector<PetscInt>     global; /* 30 per cell */
-  std::vector<PetscInt>     point;  /* 10 per cell: the node's mesh point (vertex or edge) */
+  std::vector<PetscInt>     local;  /* `nodes` per cell: local-vector offset of the node's first dof */
+  std::vector<PetscInt>     global; /* nodes nc per cell */
+  std::vector<PetscInt>     point;  /* 10 per cell: the mesh points of the P2 nodes (vertices, edges) */
 
   PetscInt Size() const { return (PetscInt)cell.size(); }
+  PetscInt Dofs() const { return nodes * nc; }
 };
 
-/* The cells of `region` (value 1; every cell if NULL) for field `field` of dm. */
-PetscErrorCode P2CellsCreate(DM dm, DMLabel region, PetscInt field, P2Cells &cells);
+/* The cells of `region` (value 1; every cell if NULL) for field `field` of dm (P1 or P2). */
+PetscErrorCode FieldCellsCreate(DM dm, DMLabel region, PetscInt field, FieldCells &cells);
 
 /* A face of the region's boundary in a labelled group, as a face of cell k: the face is
    l[slot[0..2]] = 0 of the barycentric coordinates opposite vertex 6 - sum(slot); `sign`
    makes (x_1 - x_0) x (x_2 - x_0) of its vertices slot[0..2] point out of the cell. */
-struct P2Face {
+struct CellFace {
   PetscInt  k;
   int       slot[3];
   PetscReal sign;
 };
 
 /* The faces of `label` (any value) that bound one of `cells`. */
-PetscErrorCode P2FacesCreate(DM dm, const P2Cells &cells, DMLabel label, std::vector<P2Face> &faces);
+PetscErrorCode CellFacesCreate(DM dm, const FieldCells &cells, DMLabel label, std::vector<CellFace> &faces);
 
-/* The 30 values of cell k from a local array, node-major. */
-inline void P2Gather(const P2Cells &cells, PetscInt k, const PetscScalar *x, PetscReal xe[30])
+/* The Dofs() values of cell k from a local array. */
+inline void Gather(const FieldCells &cells, PetscInt k, const PetscScalar *x, PetscReal *xe)
 {
-  const PetscInt *lo = &cells.local[10 * k];
-  for (int a = 0; a < 10; a++)
-    for (int i = 0; i < 3; i++) xe[3 * a + i] = PetscRealPart(x[lo[a] + i]);
+  const PetscInt *lo = &cells.local[cells.nodes * k];
+  for (PetscInt a = 0; a < cells.nodes; a++)
+    for (PetscInt i = 0; i < cells.nc; i++) xe[cells.nc * a + i] = PetscRealPart(x[lo[a] + i]);
 }
 
-/* Add the 30 values of cell k into a local array. */
-inline void P2Scatter(const P2Cells &cells, PetscInt k, const PetscReal re[30], PetscScalar *f)
+/* Add the Dofs() values of cell k into a local array. */
+inline void Scatter(const FieldCells &cells, PetscInt k, const PetscReal *re, PetscScalar *f)
 {
-  const PetscInt *lo = &cells.local[10 * k];
-  for (int a = 0; a < 10; a++)
-    for (int i = 0; i < 3; i++) f[lo[a] + i] += re[3 * a + i];
+  const PetscInt *lo = &cells.local[cells.nodes * k];
+  for (PetscInt a = 0; a < cells.nodes; a++)
+    for (PetscInt i = 0; i < cells.nc; i++) f[lo[a] + i] += re[cells.nc * a + i];
 }
 
 } // namespace fsi

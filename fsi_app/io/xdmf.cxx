@@ -115,7 +115,7 @@ static PetscErrorCode MeshData(XdmfSeries &s, Vec *coordinates, IS *topology)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode XdmfOpen(const char *file, DM dm, const P2Cells &cells, const char *name, const std::vector<PetscReal> &times, XdmfSeries &s)
+PetscErrorCode XdmfOpen(const char *file, DM dm, const FieldCells &cells, const char *name, const std::vector<PetscReal> &times, XdmfSeries &s)
 {
   PetscViewer viewer;
   Vec         coords;

@@ -13,7 +13,7 @@ namespace fsi {
 struct XdmfSeries {
   std::string            xdmf, h5, name;
   DM                     dm     = nullptr;
-  const P2Cells         *cells  = nullptr;
+  const FieldCells         *cells  = nullptr;
   std::vector<PetscInt>  node;             /* per local point: global node number, -1 if no node */
   std::vector<char>      owned;            /* per local point: this rank owns it */
   PetscInt               nNodes = 0, nCells = 0;
@@ -24,7 +24,7 @@ struct XdmfSeries {
 /* Open the series `file` (.xdmf; the data go to the same name with .h5) for the field of dm
    on `cells` (kept by reference). With `times` (a restart), the frames already written
    at those times are kept and the series continues. */
-PetscErrorCode XdmfOpen(const char *file, DM dm, const P2Cells &cells, const char *name, const std::vector<PetscReal> &times, XdmfSeries &s);
+PetscErrorCode XdmfOpen(const char *file, DM dm, const FieldCells &cells, const char *name, const std::vector<PetscReal> &times, XdmfSeries &s);
 PetscErrorCode XdmfWriteFrame(XdmfSeries &s, PetscReal t, Vec x);
 PetscErrorCode XdmfClose(XdmfSeries &s);
 

@@ -28,7 +28,7 @@ static void Cross(const PetscReal a[3], const PetscReal b[3], PetscReal c[3])
 /* At face point q: basis values N, their d/ds and d/dt (dN[a][0], dN[a][1]) for the face
    parametrised by (s, t) = (l[slot[1]], l[slot[2]]), and the tangents d/ds x, d/dt x of the
    reference face (dead pressure) or of the deformed one (follower). */
-static void FacePoint(const StructureBlock &sb, const CellGeometry &g, const P2Face &f, const PetscReal de[30], PetscInt q, PetscReal N[10], PetscReal dN[10][3], PetscReal ts[3], PetscReal tt[3])
+static void FacePoint(const StructureBlock &sb, const CellGeometry &g, const CellFace &f, const PetscReal de[30], PetscInt q, PetscReal N[10], PetscReal dN[10][3], PetscReal ts[3], PetscReal tt[3])
 {
   PetscReal    l[4] = {0, 0, 0, 0};
   CellGeometry st   = g; /* "gradients" of the barycentric coordinates in (s, t) */
@@ -47,7 +47,7 @@ static void FacePoint(const StructureBlock &sb, const CellGeometry &g, const P2F
 }
 
 /* + int_faces p n . v: the pressure p pushes the wall along -n; n da = sign ts x tt ds dt. */
-static void PressureResidual(const StructureBlock &sb, const P2Face &f, const PetscReal de[30], PetscReal re[30])
+static void PressureResidual(const StructureBlock &sb, const CellFace &f, const PetscReal de[30], PetscReal re[30])
 {
   const CellGeometry &g = sb.cells.geom[f.k];
   for (PetscInt q = 0; q < sb.faceRule.nq; q++) {
@@ -61,7 +61,7 @@ static void PressureResidual(const StructureBlock &sb, const P2Face &f, const Pe
 }
 
 /* The follower pressure's derivative: d(ts x tt)/d d_bk = dN_b,s e_k x tt + dN_b,t ts x e_k. */
-static void PressureTangent(const StructureBlock &sb, const P2Face &f, const PetscReal de[30], PetscReal K[900])
+static void PressureTangent(const StructureBlock &sb, const CellFace &f, const PetscReal de[30], PetscReal K[900])
 {
   const CellGeometry &g = sb.cells.geom[f.k];
   for (PetscInt q = 0; q < sb.faceRule.nq; q++) {
@@ -120,12 +120,12 @@ PetscErrorCode StructureResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
   for (PetscInt k = 0; k < sb.cells.Size(); k++) {
     const CellGeometry &g = sb.cells.geom[k];
     PetscReal           de[30], re[30] = {0};
-    P2Gather(sb.cells, k, x, de);
+    Gather(sb.cells, k, x, de);
     if (inertia) {
       PetscReal acc[30], y[30];
       for (int i = 0; i < 30; i++) acc[i] = sb.history->second[0] * de[i];
       for (size_t j = 0; j < past.size(); j++) {
-        P2Gather(sb.cells, k, past[j], y);
+        Gather(sb.cells, k, past[j], y);
         for (int i = 0; i < 30; i++) acc[i] += sb.history->second[j + 1] * y[i];
       }
       for (int a = 0; a < 10; a++)
@@ -150,14 +150,14 @@ PetscErrorCode StructureResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
       for (int a = 0; a < 10; a++)
         for (int i = 0; i < 3; i++) re[3 * a + i] += wq * (P[i * 3] * dN[a][0] + P[i * 3 + 1] * dN[a][1] + P[i * 3 + 2] * dN[a][2] - b[i] * N[a]);
     }
-    P2Scatter(sb.cells, k, re, f);
+    Scatter(sb.cells, k, re, f);
   }
   if (sb.pressure != 0)
-    for (const P2Face &face : sb.loaded) {
+    for (const CellFace &face : sb.loaded) {
       PetscReal de[30], re[30] = {0};
-      P2Gather(sb.cells, face.k, x, de);
+      Gather(sb.cells, face.k, x, de);
       PressureResidual(sb, face, de, re);
-      P2Scatter(sb.cells, face.k, re, f);
+      Scatter(sb.cells, face.k, re, f);
     }
   for (size_t j = 0; j < past.size(); j++) PetscCall(VecRestoreArrayRead(sb.history->past[j], &past[j]));
   PetscCall(VecRestoreArray(Fl, &f));
@@ -182,7 +182,7 @@ PetscErrorCode StructureJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
   for (PetscInt k = 0; k < sb.cells.Size(); k++) {
     const CellGeometry &g = sb.cells.geom[k];
     PetscReal           de[30], K[900] = {0};
-    P2Gather(sb.cells, k, x, de);
+    Gather(sb.cells, k, x, de);
     if (mass)
       for (int a = 0; a < 10; a++)
         for (int b = 0; b < 10; b++)
@@ -208,9 +208,9 @@ PetscErrorCode StructureJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
     PetscCall(MatSetValues(P, 30, &sb.cells.global[30 * k], 30, &sb.cells.global[30 * k], K, ADD_VALUES));
   }
   if (sb.follower && sb.pressure != 0)
-    for (const P2Face &face : sb.loaded) {
+    for (const CellFace &face : sb.loaded) {
       PetscReal de[30], K[900] = {0};
-      P2Gather(sb.cells, face.k, x, de);
+      Gather(sb.cells, face.k, x, de);
       PressureTangent(sb, face, de, K);
       PetscCall(MatSetValues(P, 30, &sb.cells.global[30 * face.k], 30, &sb.cells.global[30 * face.k], K, ADD_VALUES));
     }

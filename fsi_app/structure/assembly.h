@@ -18,13 +18,13 @@ struct StructureBlock {
   SNES               snes = nullptr;             /* told when a cell is inverted (det F <= 0) */
   PetscReal          mms = 0;                    /* amplitude of the manufactured solution (its body force), 0: none */
   DMLabel            region = nullptr;           /* cells of the wall (value 1), or all cells */
-  P2Cells            cells;                      /* the block's cells, prepared for assembly */
+  FieldCells            cells;                      /* the block's cells, prepared for assembly */
   P2Rule             rule;                       /* stress and body force */
   PetscReal          mass[100];                  /* P2 mass matrix of the reference cell (volume 1/6) */
   FaceRule           faceRule;
   PetscReal          pressure = 0;               /* on the faces of `loaded` (pushes along -n) */
   PetscBool          follower = PETSC_FALSE;     /* the pressure follows the deformed face */
-  std::vector<P2Face> loaded;                    /* faces of -structure_pressure_group */
+  std::vector<CellFace> loaded;                    /* faces of -structure_pressure_group */
   PetscReal          rho      = 0;               /* density: inertia when history has past states */
   const TimeHistory *history  = nullptr;
 };

@@ -75,11 +75,11 @@ PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb, PetscI
     PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, "boundary", boundary, 1, &one, *field, 0, nullptr, (void (*)(void))MMSElasticityExact, nullptr, (void *)&sc.mmsAmplitude, nullptr));
   }
   PetscCall(AddClamps(sc, dm, *field));
-  PetscCall(P2CellsCreate(dm, sb.region, *field, sb.cells)); /* after the constraints: they set the global indices */
+  PetscCall(FieldCellsCreate(dm, sb.region, *field, sb.cells)); /* after the constraints: they set the global indices */
   if (sc.pressure != 0) {
     DMLabel loaded;
     PetscCall(DMGetLabel(dm, sc.loaded, &loaded));
-    PetscCall(P2FacesCreate(dm, sb.cells, loaded, sb.loaded));
+    PetscCall(CellFacesCreate(dm, sb.cells, loaded, sb.loaded));
   }
   PetscCall(DMSNESSetFunctionLocal(dm, StructureResidual, &sb));
   PetscCall(DMSNESSetJacobianLocal(dm, StructureJacobian, &sb));

@@ -3,7 +3,7 @@
 
 namespace fsi {
 
-PetscErrorCode ComputeErrors(DM dm, const P2Cells &cells, Vec X, PetscReal t, ExactSolution exact, const void *ctx, Errors &e)
+PetscErrorCode ComputeErrors(DM dm, const FieldCells &cells, Vec X, PetscReal t, ExactSolution exact, const void *ctx, Errors &e)
 {
   P2Rule    rule;
   Vec       Xl;
@@ -19,7 +19,7 @@ PetscErrorCode ComputeErrors(DM dm, const P2Cells &cells, Vec X, PetscReal t, Ex
   for (PetscInt k = 0; k < cells.Size(); k++) {
     const CellGeometry &g = cells.geom[k];
     PetscReal           de[30];
-    P2Gather(cells, k, xa, de);
+    Gather(cells, k, xa, de);
     for (PetscInt q = 0; q < rule.nq; q++) {
       const PetscReal *l = &rule.lambda[4 * q], *N = &rule.N[10 * q], w = rule.w[q] * g.detE;
       PetscReal        dN[10][3], xq[3], u[3], G[9], uh[3] = {0, 0, 0}, Gh[9] = {0};

@@ -14,6 +14,6 @@ struct Errors {
 };
 
 /* X is global; its essential values are inserted at time t. */
-PetscErrorCode ComputeErrors(DM dm, const P2Cells &cells, Vec X, PetscReal t, ExactSolution exact, const void *ctx, Errors &e);
+PetscErrorCode ComputeErrors(DM dm, const FieldCells &cells, Vec X, PetscReal t, ExactSolution exact, const void *ctx, Errors &e);
 
 } // namespace fsi
