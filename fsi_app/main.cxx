@@ -1,5 +1,6 @@
 static const char help[] = "fsi_app: monolithic fluid-structure interaction on PETSc. So far: the structure block\n"
-                           "(linear elastic, Neo-Hooke and arterial walls; statics and dynamics) and its verification.\n"
+                           "(linear elastic, Neo-Hooke and arterial walls; statics and dynamics), the fluid block\n"
+                           "(Navier-Stokes, P2-P1, fixed mesh) and their verification.\n"
                            "Scenes are options files: -options_file scenes/X.opts\n";
 
 #include "io/checkpoint.h"
@@ -9,6 +10,7 @@ static const char help[] = "fsi_app: monolithic fluid-structure interaction on P
 #include "scene.h"
 #include "solver/subdomains.h"
 #include "solver/time_loop.h"
+#include "fluid/setup.h"
 #include "structure/setup.h"
 #include "verification/errors.h"
 #include "verification/mms.h"
@@ -20,9 +22,16 @@ using namespace fsi;
 static PetscErrorCode CreateMesh(const Scene &sc, DM *dm)
 {
   std::vector<std::string> required;
-  for (const auto &g : SplitList(sc.clamp)) required.push_back(g.substr(0, g.find(':')));
-  if (sc.region[0]) required.push_back(sc.region);
-  if (sc.pressure != 0) required.push_back(sc.loaded);
+  if (sc.physics == PHYSICS_STRUCTURE) {
+    for (const auto &g : SplitList(sc.clamp)) required.push_back(g.substr(0, g.find(':')));
+    if (sc.region[0]) required.push_back(sc.region);
+    if (sc.pressure != 0) required.push_back(sc.loaded);
+  } else {
+    for (const auto &g : SplitList(sc.noslip)) required.push_back(g.substr(0, g.find(':')));
+    required.push_back(sc.fluidRegion);
+    if (sc.inletPressure != 0 || sc.poiseuille[0] > 0) required.push_back(sc.inlet);
+    if (sc.poiseuille[0] > 0) required.push_back(sc.outlet);
+  }
 
   PetscFunctionBegin;
   PetscCall(LoadMesh(PETSC_COMM_WORLD, sc.mesh, required, dm));
@@ -36,8 +45,9 @@ static PetscErrorCode CreateMesh(const Scene &sc, DM *dm)
   PetscFunctionReturn(0);
 }
 
-/* Newton + the KSP/PC of the options database; a linear dynamic operator is set up once. */
-static PetscErrorCode CreateSolver(const Scene &sc, DM dm, const StructureBlock &sb, PetscInt field, SNES *snes)
+/* Newton + the KSP/PC of the options database; a linear dynamic operator is set up once; the
+   structure's PC gets its element subdomains and rigid-body modes. */
+static PetscErrorCode CreateSolver(const Scene &sc, DM dm, PetscInt field, SNES *snes)
 {
   Mat J;
   KSP ksp;
@@ -48,14 +58,16 @@ static PetscErrorCode CreateSolver(const Scene &sc, DM dm, const StructureBlock 
   PetscCall(SNESSetDM(*snes, dm));
   PetscCall(DMCreateMatrix(dm, &J));
   PetscCall(SNESSetJacobian(*snes, J, J, nullptr, nullptr));
-  if (sc.material == LINEAR_ELASTIC && sc.Dynamic() && !sc.follower) {
+  const PetscBool structure = (PetscBool)(sc.physics == PHYSICS_STRUCTURE);
+  if (structure && sc.material == LINEAR_ELASTIC && sc.Dynamic() && !sc.follower) {
     PetscCall(SNESSetLagJacobian(*snes, -2));
     PetscCall(SNESSetLagJacobianPersists(*snes, PETSC_TRUE));
     PetscCall(SNESSetLagPreconditioner(*snes, -2));
     PetscCall(SNESSetLagPreconditionerPersists(*snes, PETSC_TRUE));
   }
-  { /* the residual norm rejects good full Newton steps of stiff volumetric laws; the critical-
-       point search (a secant on the energy's slope) does not: arterial wall 7 -> 3 steps */
+  if (structure) { /* the residual norm rejects good full Newton steps of stiff volumetric laws;
+                     the critical-point search (a secant on the energy's slope) does not: arterial
+                     wall 7 -> 3 steps */
     SNESLineSearch ls;
     PetscCall(SNESGetLineSearch(*snes, &ls));
     PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHCP));
@@ -63,19 +75,28 @@ static PetscErrorCode CreateSolver(const Scene &sc, DM dm, const StructureBlock 
   PetscCall(SNESSetFromOptions(*snes));
   PetscCall(SNESGetKSP(*snes, &ksp));
   PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(SetGDSWSubdomains(pc, dm, J, sc.region, field, sc.subdomains));
+  if (structure) PetscCall(SetGDSWSubdomains(pc, dm, J, sc.region, field, sc.subdomains));
   PetscCall(MatDestroy(&J));
   PetscFunctionReturn(0);
 }
 
 /* Errors against the exact solution of the verification scenes, printed and reported. */
-static PetscErrorCode Verify(const Scene &sc, DM dm, const StructureBlock &sb, Vec d, RunReport &report)
+static PetscErrorCode Verify(const Scene &sc, DM dm, const StructureBlock &sb, const FluidBlock &fb, Vec d, RunReport &report)
 {
-  Errors e;
-  Lame   lame = LameCylinder(sc.E, sc.nu, sc.pressure, sc.lameRadii[0], sc.lameRadii[1]);
+  Errors     e;
+  Lame       lame = LameCylinder(sc.E, sc.nu, sc.pressure, sc.lameRadii[0], sc.lameRadii[1]);
+  Poiseuille flow = {sc.poiseuille[0], sc.poiseuille[1], sc.poiseuille[2], sc.muFluid};
 
   PetscFunctionBegin;
-  if (sc.lameRadii[1] > 0) PetscCall(ComputeErrors(dm, sb.cells, d, 0, LameSolution, &lame, e));
+  if (sc.physics == PHYSICS_FLUID && flow.R > 0) {
+    const PetscReal exact = PETSC_PI * PetscPowReal(flow.R, 4) * flow.dp / (8 * flow.mu * flow.L);
+    PetscReal       Q;
+    PetscCall(FluidFlux(dm, fb, fb.tractions[1].faces, d, &Q));
+    PetscCall(ComputeErrors(dm, fb.velocity, d, 0, PoiseuilleVelocity, &flow, e));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "flux %.6e exact %.6e relative error %.3e\n", (double)Q, (double)exact, (double)PetscAbsReal(Q / exact - 1)));
+    report.results.insert(report.results.end(), {{"flux", Q}, {"flux_relative_error", PetscAbsReal(Q / exact - 1)}});
+  } else if (sc.physics == PHYSICS_FLUID) PetscFunctionReturn(0);
+  else if (sc.lameRadii[1] > 0) PetscCall(ComputeErrors(dm, sb.cells, d, 0, LameSolution, &lame, e));
   else if (sc.mms) PetscCall(ComputeErrors(dm, sb.cells, d, 0, MMSElasticitySolution, &sc.mmsAmplitude, e));
   else PetscFunctionReturn(0);
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "L2 error %.6e relative %.6e\nH1 error %.6e relative %.6e\n", (double)e.l2, (double)(e.l2 / e.l2Exact), (double)e.h1, (double)(e.h1 / e.h1Exact)));
@@ -87,6 +108,7 @@ int main(int argc, char **argv)
 {
   Scene          sc;
   StructureBlock sb;
+  FluidBlock     fb;
   TimeHistory    history;
   DM             dm;
   SNES           snes;
@@ -100,19 +122,33 @@ int main(int argc, char **argv)
   PetscCall(PhasesBegin());
   PetscCall(ReadScene(sc));
   PetscCall(CreateMesh(sc, &dm));
-  PetscCall(SetUpStructure(sc, dm, sb, &field));
+  PetscInt pressureField = -1;
+  if (sc.physics == PHYSICS_STRUCTURE) PetscCall(SetUpStructure(sc, dm, sb, &field));
+  else PetscCall(SetUpFluid(sc, dm, fb, &field, &pressureField));
   PetscCall(DMCreateGlobalVector(dm, &d));
-  PetscCall(PetscObjectSetName((PetscObject)d, "displacement"));
+  PetscCall(PetscObjectSetName((PetscObject)d, "solution"));
   PetscCall(VecGetSize(d, &N));
-  report.unknowns = {{"structure", N}, {"fluid", 0}, {"pressure", 0}, {"geometry", 0}, {"multiplier", 0}};
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "unknowns: structure %" PetscInt_FMT " fluid 0 pressure 0 geometry 0 multiplier 0\n", N));
-  PetscCall(CreateSolver(sc, dm, sb, field, &snes));
+  if (sc.physics == PHYSICS_STRUCTURE) report.unknowns = {{"structure", N}, {"fluid", 0}, {"pressure", 0}, {"geometry", 0}, {"multiplier", 0}};
+  else {
+    IS      *is;
+    PetscInt nf, nu, np;
+    PetscCall(DMCreateFieldIS(dm, &nf, nullptr, &is));
+    PetscCall(ISGetSize(is[field], &nu));
+    PetscCall(ISGetSize(is[pressureField], &np));
+    for (PetscInt f = 0; f < nf; f++) PetscCall(ISDestroy(&is[f]));
+    PetscCall(PetscFree(is));
+    report.unknowns = {{"structure", 0}, {"fluid", nu}, {"pressure", np}, {"geometry", 0}, {"multiplier", 0}};
+  }
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "unknowns:"));
+  for (const auto &u : report.unknowns) PetscCall(PetscPrintf(PETSC_COMM_WORLD, " %s %" PetscInt_FMT, u.first.c_str(), u.second));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "\n"));
+  PetscCall(CreateSolver(sc, dm, field, &snes));
   sb.snes = snes;
 
   const PetscBool dynamic = sc.Dynamic();
   const PetscReal step    = dynamic ? sc.dt : 1.0 / sc.loadSteps;
   PetscCall(TimeHistoryCreate(dm, sc.scheme, step, dynamic, history));
-  sb.history = &history;
+  sb.history = fb.history = &history;
   PetscCall(VecSet(d, 0.0));
   if (sc.restart[0]) {
     CheckpointHeader c;
@@ -123,13 +159,17 @@ int main(int argc, char **argv)
   if (sc.output[0]) {
     std::vector<PetscReal> times; /* frames a run restarted at step `first` has written */
     for (PetscInt k = 0; sc.restart[0] && k <= first; k += sc.outputEvery) times.push_back(k * step);
-    PetscCall(XdmfOpen(sc.output, dm, sb.cells, "displacement", times, series));
+    if (sc.physics == PHYSICS_STRUCTURE) PetscCall(XdmfOpen(sc.output, dm, sb.cells, "displacement", times, series));
+    else PetscCall(XdmfOpen(sc.output, dm, fb.velocity, "velocity", times, series));
     if (!sc.restart[0]) PetscCall(XdmfWriteFrame(series, 0, d));
   }
 
   TimeLoop loop;
   loop.snes = snes, loop.history = &history, loop.steps = sc.Steps(), loop.maxCuts = sc.maxCuts, loop.dynamic = dynamic;
-  loop.setTime   = [&](PetscReal t) { sb.pressure = StructurePressure(sc, t); return PetscErrorCode(0); };
+  loop.setTime   = [&](PetscReal t) {
+    sb.pressure = StructurePressure(sc, t), fb.time = t;
+    return PetscErrorCode(0);
+  };
   loop.afterStep = [&](PetscInt k, PetscReal t, Vec x) -> PetscErrorCode {
     PetscFunctionBegin;
     if (sc.output[0] && k % sc.outputEvery == 0) PetscCall(XdmfWriteFrame(series, t, x));
@@ -148,7 +188,7 @@ int main(int argc, char **argv)
   if (dynamic && solved) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "steps %" PetscInt_FMT " newton per step %.2f krylov per newton %.2f\n", solved, (double)newton / solved, newton ? (double)krylov / newton : 0.0));
   PetscReal dmax;
   PetscCall(VecNorm(d, NORM_INFINITY, &dmax));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "newton %" PetscInt_FMT " krylov %" PetscInt_FMT " reason %s time %.3f s max displacement %.6e\n", newton, krylov, SNESConvergedReasons[reason], t1 - t0, (double)dmax));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "newton %" PetscInt_FMT " krylov %" PetscInt_FMT " reason %s time %.3f s max %s %.6e\n", newton, krylov, SNESConvergedReasons[reason], t1 - t0, sc.physics == PHYSICS_STRUCTURE ? "displacement" : "unknown", (double)dmax));
   char cure[160]; /* what to change: the load increments (statics) or the time step */
   if (dynamic) PetscCall(PetscSNPrintf(cure, sizeof(cure), "reduce the time step (-dt %g now) or allow more halvings (-max_step_cuts %" PetscInt_FMT " now)", (double)sc.dt, sc.maxCuts));
   else PetscCall(PetscSNPrintf(cure, sizeof(cure), "apply the load in more increments (-structure_load_steps %" PetscInt_FMT " now) or allow more halvings (-max_step_cuts %" PetscInt_FMT " now)", sc.loadSteps, sc.maxCuts));
@@ -163,8 +203,9 @@ int main(int argc, char **argv)
   PetscCheck(reason >= 0, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton did not converge in step %" PetscInt_FMT " (%s, also on the step halved %" PetscInt_FMT " times); see -snes_monitor, or %s", solved ? report.steps.back().step : 0, SNESConvergedReasons[reason], sc.maxCuts, cure);
   PetscReal dnorm;
   PetscCall(VecNorm(d, NORM_2, &dnorm));
-  report.results.insert(report.results.end(), {{"max_displacement", dmax}, {"displacement_norm", dnorm}});
-  PetscCall(Verify(sc, dm, sb, d, report));
+  if (sc.physics == PHYSICS_STRUCTURE) report.results.insert(report.results.end(), {{"max_displacement", dmax}, {"displacement_norm", dnorm}});
+  else report.results.insert(report.results.end(), {{"max_unknown", dmax}, {"solution_norm", dnorm}});
+  PetscCall(Verify(sc, dm, sb, fb, d, report));
   PetscCall(PhasesMeasure(PETSC_COMM_WORLD, t1 - t0, report.phases));
   const Phases &p = report.phases;
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "seconds: assembly %.3f preconditioner setup %.3f krylov %.3f total %.3f; peak memory %.1f MiB\n", p.assembly, p.setup, p.krylov, p.total, p.peakMiB));

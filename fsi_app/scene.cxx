@@ -2,16 +2,7 @@
 
 namespace fsi {
 
-std::vector<std::string> SplitList(const char *s)
-{
-  std::vector<std::string> out;
-  for (std::string r = s; !r.empty();) {
-    const size_t k = r.find(',');
-    out.push_back(r.substr(0, k));
-    r = k == std::string::npos ? "" : r.substr(k + 1);
-  }
-  return out;
-}
+const char *const PhysicsNames[] = {"structure", "fluid", "Physics", "PHYSICS_", nullptr};
 
 PetscErrorCode ReadScene(Scene &sc)
 {
@@ -20,6 +11,7 @@ PetscErrorCode ReadScene(Scene &sc)
 
   PetscFunctionBegin;
   PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "fsi_app scene", nullptr);
+  PetscCall(PetscOptionsEnum("-physics", "the blocks to solve: the wall alone or the fluid alone (fsi: a later issue)", nullptr, PhysicsNames, (PetscEnum)sc.physics, (PetscEnum *)&sc.physics, nullptr));
   PetscCall(PetscOptionsString("-mesh", "gmsh mesh file", nullptr, sc.mesh, sc.mesh, sizeof(sc.mesh), nullptr));
   PetscCall(PetscOptionsInt("-refine", "uniform refinements of the mesh after distribution", nullptr, sc.refine, &sc.refine, nullptr));
   PetscCall(PetscOptionsString("-structure_region", "physical group of the wall's cells (empty: every cell)", nullptr, sc.region, sc.region, sizeof(sc.region), nullptr));
@@ -41,6 +33,16 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(PetscOptionsReal("-structure_density", "density of the wall (g/cm^3)", nullptr, sc.rho, &sc.rho, nullptr));
   PetscCall(PetscOptionsInt("-structure_degree", "polynomial degree of the displacement", nullptr, sc.degree, &sc.degree, nullptr));
   PetscCall(PetscOptionsInt("-structure_subdomains", "GDSW subdomains per rank (METIS on the rank's cells)", nullptr, sc.subdomains, &sc.subdomains, nullptr));
+  PetscCall(PetscOptionsString("-fluid_region", "physical group of the fluid's cells", nullptr, sc.fluidRegion, sc.fluidRegion, sizeof(sc.fluidRegion), nullptr));
+  PetscCall(PetscOptionsString("-fluid_noslip", "groups of faces where the velocity is zero, comma separated", nullptr, sc.noslip, sc.noslip, sizeof(sc.noslip), nullptr));
+  PetscCall(PetscOptionsReal("-fluid_density", "density of the fluid (g/cm^3)", nullptr, sc.rhoFluid, &sc.rhoFluid, nullptr));
+  PetscCall(PetscOptionsReal("-fluid_viscosity", "dynamic viscosity of the fluid (poise)", nullptr, sc.muFluid, &sc.muFluid, nullptr));
+  PetscCall(PetscOptionsReal("-fluid_inlet_pressure", "normal stress: traction -p n on the faces of -fluid_inlet (dyn/cm^2); the pulse ends at -structure_pressure_until", nullptr, sc.inletPressure, &sc.inletPressure, nullptr));
+  PetscCall(PetscOptionsString("-fluid_inlet", "group of the inflow faces", nullptr, sc.inlet, sc.inlet, sizeof(sc.inlet), nullptr));
+  PetscCall(PetscOptionsString("-fluid_outlet", "group of the outflow faces (stress-free)", nullptr, sc.outlet, sc.outlet, sizeof(sc.outlet), nullptr));
+  n = 3;
+  PetscCall(PetscOptionsRealArray("-poiseuille", "verification: Hagen-Poiseuille flow in a tube of radius R and length L along z driven by a pressure drop: R,L,dp", nullptr, sc.poiseuille, &n, &set));
+  PetscCheck(!set || (n == 3 && sc.poiseuille[0] > 0 && sc.poiseuille[1] > 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-poiseuille: give R,L,dp with R > 0 and L > 0");
   PetscCall(PetscOptionsReal("-dt", "time step (s); 0 solves the static problem", nullptr, sc.dt, &sc.dt, nullptr));
   PetscCall(PetscOptionsReal("-t_final", "end time (s)", nullptr, sc.tFinal, &sc.tFinal, nullptr));
   PetscCall(PetscOptionsEnum("-time_scheme", "differences in time for the inertia", nullptr, TimeSchemeNames, (PetscEnum)sc.scheme, (PetscEnum *)&sc.scheme, nullptr));
@@ -66,6 +68,7 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCheck(sc.degree >= 1 && sc.degree <= 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_degree %" PetscInt_FMT ": use 1, 2 or 3", sc.degree);
   PetscCheck(sc.dt >= 0 && (sc.dt == 0 || sc.tFinal >= sc.dt), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-dt %g -t_final %g: need 0 <= dt <= t_final", (double)sc.dt, (double)sc.tFinal);
   PetscCheck(sc.ramp >= 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_pressure_ramp %g: must be >= 0", (double)sc.ramp);
+  PetscCheck(sc.rhoFluid > 0 && sc.muFluid > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-fluid_density %g -fluid_viscosity %g: both must be positive", (double)sc.rhoFluid, (double)sc.muFluid);
   PetscCheck(sc.rho > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_density %g: must be positive", (double)sc.rho);
   PetscCheck(sc.loadSteps >= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_load_steps %" PetscInt_FMT ": at least 1", sc.loadSteps);
   PetscCheck(sc.maxCuts >= 0 && sc.maxCuts <= 20, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-max_step_cuts %" PetscInt_FMT ": between 0 and 20", sc.maxCuts);

@@ -1,6 +1,7 @@
 /* A scene: every application option, read once, checked, with its default (-help lists them). */
 #pragma once
 
+#include "discretization/fields.h"
 #include "solver/time_history.h"
 #include "structure/materials.h"
 #include <string>
@@ -8,7 +9,11 @@
 
 namespace fsi {
 
+enum Physics { PHYSICS_STRUCTURE = 0, PHYSICS_FLUID = 1 };
+extern const char *const PhysicsNames[];
+
 struct Scene {
+  Physics physics = PHYSICS_STRUCTURE; /* the blocks a scene solves */
   /* mesh */
   char     mesh[PETSC_MAX_PATH_LEN] = "meshes/cube_L0.msh";
   PetscInt refine                   = 0;
@@ -27,6 +32,13 @@ struct Scene {
   PetscReal fibreAngle  = 43.39;                          /* degrees from circumferential */
   PetscReal rho         = 1.2;
   PetscInt  degree = 2, subdomains = 1;
+  /* fluid */
+  char      fluidRegion[64] = "fluid";
+  char      noslip[256]     = "interface"; /* groups with u = 0 */
+  PetscReal rhoFluid = 1.0, muFluid = 0.03; /* g/cm^3, poise */
+  PetscReal inletPressure = 0;              /* normal stress -p n on the inlet group (dyn/cm^2) */
+  char      inlet[64] = "inlet", outlet[64] = "outlet";
+  PetscReal poiseuille[3] = {0, 0, 0};      /* verification: R, L, pressure drop */
   /* time, or load increments in statics */
   PetscReal  dt = 0, tFinal = 0.01;
   PetscInt   loadSteps = 1, maxCuts = 4;
@@ -44,8 +56,5 @@ struct Scene {
 };
 
 PetscErrorCode ReadScene(Scene &sc);
-
-/* "a,b:xz" -> {"a", "b:xz"} */
-std::vector<std::string> SplitList(const char *s);
 
 } // namespace fsi

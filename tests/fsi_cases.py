@@ -328,6 +328,60 @@ def structure_arterial():
     between(r[0]["dmax"] / 2.70e-3, 0.15, 0.5, "arterial / Neo-Hooke displacement")
 
 
+
+def flow(*opts, np=1):
+    out = run([APP] + [str(o) for o in opts], np)
+    r = {"unknowns": dict(re.findall(r"(\w+) (\d+)", re.search(r"unknowns: (.*)", out).group(1)))}
+    m = re.search(r"newton (\d+) krylov (\d+) reason (\w+)", out)
+    r.update(newton=int(m.group(1)), krylov=int(m.group(2)), reason=m.group(3))
+    f = re.search(r"flux (\S+) exact (\S+) relative error (\S+)", out)
+    if f:
+        r.update(flux=float(f.group(1)), flux_error=float(f.group(3)))
+        r["l2_relative"] = float(re.search(r"L2 error \S+ relative (\S+)", out).group(1))
+    r["norms"] = [float(x) for x in re.findall(r"\d+ SNES Function norm (\S+)", out)]
+    assert r["reason"].startswith("CONVERGED"), r
+    return r
+
+
+POISEUILLE = ["-options_file", os.path.join(MESHES, "..", "scenes", "fluid_poiseuille.opts")]
+
+
+@case
+def fluid_poiseuille():
+    """Hagen-Poiseuille flow in the rigid fluid region of tube #1: a fluid-only scene allocates
+    no structure, geometry or multiplier unknowns; Newton (exact Jacobian, convection included)
+    converges quadratically; FGMRES with the fieldsplit Schur preconditioner of
+    scenes/fluid_simple.opts gives MUMPS's solution; the flux and velocity errors against the
+    exact flow fall at rate 2 from tube1_L0 to tube1_L1 (the straight-sided tetrahedra's
+    polygonal cross-section: the discretisation itself is exact for the quadratic profile only
+    on an exact geometry); 2 ranks give the flux of 1."""
+    r = [flow(*POISEUILLE, "-mesh", os.path.join(MESHES, f"tube1_L{k}.msh"), "-snes_monitor") for k in (0, 1)]
+    assert r[0]["unknowns"] == {"structure": "0", "fluid": "2142", "pressure": "339", "geometry": "0", "multiplier": "0"}, r[0]
+    assert r[1]["unknowns"]["fluid"] == "22974" and r[1]["unknowns"]["pressure"] == "1828", r[1]
+    norms = r[0]["norms"]
+    print("Newton residuals", norms)
+    assert r[0]["newton"] <= 4 and norms[2] < 1e-3 * norms[1] and norms[1] < 1e-2 * norms[0], norms
+    between(r[0]["krylov"] / r[0]["newton"], 5, 40, "FGMRES iterations per Newton step, fieldsplit Schur selfp + BoomerAMG")
+    direct = flow(*POISEUILLE, "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps")
+    between(abs(direct["flux"] / r[0]["flux"] - 1), 0, 1e-6, "fieldsplit / MUMPS flux")
+    for key in ("flux_error", "l2_relative"):
+        between(rates([x[key] for x in r])[0], 1.8, 2.4, f"{key} rate L0 -> L1")
+    assert r[1]["flux_error"] < 0.035, r[1]
+    between(flow(*POISEUILLE, np=2)["flux"] / r[0]["flux"], 1 - 1e-6, 1 + 1e-6, "2 ranks / 1 rank flux")
+
+
+@case
+def fluid_pulse():
+    """The seed's inflow pulse (1330 dyn/cm^2 for t <= 3 ms) in the rigid tube #1, backward
+    Euler dt 0.5 ms, 2 ranks: Newton converges in every step within 3 iterations, FGMRES with
+    the fieldsplit preconditioner needs at most 20 iterations per Newton step."""
+    out = run([APP, "-options_file", os.path.join(MESHES, "..", "scenes", "fluid_tube1_pulse.opts"), "-mesh", os.path.join(MESHES, "tube1_L0.msh"),
+               "-t_final", 2e-3], 2)
+    steps = [(int(a), int(b)) for a, b in re.findall(r"step \d+/4 t \S+ newton (\d+) krylov (\d+) CONVERGED", out)]
+    print(steps)
+    assert len(steps) == 4 and all(n <= 3 and k <= 20 * n for n, k in steps), steps
+
+
 @case
 def structure_bad_options():
     mesh = os.path.join(MESHES, "tube1_L0.msh")

@@ -3,7 +3,8 @@ import os
 import subprocess
 import sys
 
-BUILD = os.environ.get("GDSW_BUILD", os.path.join(os.path.dirname(__file__), "..", "build"))
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BUILD = os.environ.get("GDSW_BUILD", os.path.join(TOP, "build"))
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_mpi_yield_when_idle="1")
 CASES = {}
@@ -18,7 +19,7 @@ def run(cmd, np=1, fail=False):
     """Run cmd on np ranks; return its output. fail=True expects a nonzero exit status, None
     accepts either."""
     full = ["mpiexec", "-n", str(np)] + [str(c) for c in cmd]
-    p = subprocess.run(full, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=500)
+    p = subprocess.run(full, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=500, cwd=TOP)  # scenes name files from the top
     print("$", " ".join(full), "\n" + p.stdout[-3000:])
     assert fail is None or (p.returncode != 0) == fail, f"exit status {p.returncode}, expected {'failure' if fail else 'success'}"
     return p.stdout

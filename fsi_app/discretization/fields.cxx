@@ -44,4 +44,51 @@ PetscErrorCode AddLagrangeField(DM dm, const std::string &name, const std::strin
   PetscFunctionReturn(0);
 }
 
+std::vector<std::string> SplitList(const char *s)
+{
+  std::vector<std::string> out;
+  for (std::string r = s; !r.empty();) {
+    const size_t k = r.find(',');
+    out.push_back(r.substr(0, k));
+    r = k == std::string::npos ? "" : r.substr(k + 1);
+  }
+  return out;
+}
+
+static PetscErrorCode Zero(PetscInt, PetscReal, const PetscReal[], PetscInt nc, PetscScalar *u, void *)
+{
+  for (PetscInt c = 0; c < nc; c++) u[c] = 0;
+  return 0;
+}
+
+PetscErrorCode AddZeroDirichlet(DM dm, const char *groups, PetscInt field, const char *option)
+{
+  PetscFunctionBegin;
+  for (const auto &spec : SplitList(groups)) {
+    const std::string     g = spec.substr(0, spec.find(':'));
+    std::vector<PetscInt> comps; /* empty: all */
+    if (spec.find(':') != std::string::npos)
+      for (char c : spec.substr(spec.find(':') + 1)) {
+        PetscCheck(c == 'x' || c == 'y' || c == 'z', PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s %s: components are x, y, z", option, spec.c_str());
+        comps.push_back(c - 'x');
+      }
+    DMLabel         group;
+    IS              values;
+    PetscInt        nv;
+    const PetscInt *v;
+    PetscCall(DMGetLabel(dm, g.c_str(), &group));
+    PetscCall(DMLabelGetValueIS(group, &values));
+    PetscCall(ISGetLocalSize(values, &nv));
+    PetscCall(ISGetIndices(values, &v));
+    std::vector<PetscInt> ids(v, v + nv);
+    PetscCall(ISRestoreIndices(values, &v));
+    PetscCall(ISDestroy(&values));
+    PetscInt any = nv, gany;
+    PetscCallMPI(MPIU_Allreduce(&any, &gany, 1, MPIU_INT, MPI_MAX, PETSC_COMM_WORLD));
+    if (ids.empty() && gany) ids.push_back(0); /* the label's value lives on other ranks */
+    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, spec.c_str(), group, (PetscInt)ids.size(), ids.data(), field, (PetscInt)comps.size(), comps.empty() ? nullptr : comps.data(), (void (*)(void))Zero, nullptr, nullptr, nullptr));
+  }
+  PetscFunctionReturn(0);
+}
+
 } // namespace fsi

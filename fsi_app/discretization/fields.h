@@ -4,11 +4,19 @@
 
 #include <petscdmplex.h>
 #include <string>
+#include <vector>
 
 namespace fsi {
 
 /* Add a Lagrange field of `degree` with `nc` components on the cells of group `region`
    ("" for every cell); returns its field number. Call DMCreateDS() after the last one. */
 PetscErrorCode AddLagrangeField(DM dm, const std::string &name, const std::string &region, PetscInt nc, PetscInt degree, PetscInt *field);
+
+/* Field `field` = 0 on the faces of each comma-separated group ("a,b:xz": only components x, z
+   on b); `option` names the option in error messages. */
+PetscErrorCode AddZeroDirichlet(DM dm, const char *groups, PetscInt field, const char *option);
+
+/* "a,b:xz" -> {"a", "b:xz"} */
+std::vector<std::string> SplitList(const char *s);
 
 } // namespace fsi

@@ -4,43 +4,6 @@
 
 namespace fsi {
 
-static PetscErrorCode ZeroDisplacement(PetscInt, PetscReal, const PetscReal[], PetscInt nc, PetscScalar *u, void *)
-{
-  for (PetscInt c = 0; c < nc; c++) u[c] = 0;
-  return 0;
-}
-
-/* d = 0 on each group of -structure_clamp, on the listed components only with group:xz */
-static PetscErrorCode AddClamps(const Scene &sc, DM dm, PetscInt field)
-{
-  PetscFunctionBegin;
-  for (const auto &spec : SplitList(sc.clamp)) {
-    const std::string     g = spec.substr(0, spec.find(':'));
-    std::vector<PetscInt> comps; /* empty: all */
-    if (spec.find(':') != std::string::npos)
-      for (char c : spec.substr(spec.find(':') + 1)) {
-        PetscCheck(c == 'x' || c == 'y' || c == 'z', PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_clamp %s: components are x, y, z", spec.c_str());
-        comps.push_back(c - 'x');
-      }
-    DMLabel         group;
-    IS              values;
-    PetscInt        nv;
-    const PetscInt *v;
-    PetscCall(DMGetLabel(dm, g.c_str(), &group));
-    PetscCall(DMLabelGetValueIS(group, &values));
-    PetscCall(ISGetLocalSize(values, &nv));
-    PetscCall(ISGetIndices(values, &v));
-    std::vector<PetscInt> ids(v, v + nv);
-    PetscCall(ISRestoreIndices(values, &v));
-    PetscCall(ISDestroy(&values));
-    PetscInt any = nv, gany;
-    PetscCallMPI(MPIU_Allreduce(&any, &gany, 1, MPIU_INT, MPI_MAX, PETSC_COMM_WORLD));
-    if (ids.empty() && gany) ids.push_back(0); /* the label's value lives on other ranks */
-    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, spec.c_str(), group, (PetscInt)ids.size(), ids.data(), field, (PetscInt)comps.size(), comps.empty() ? nullptr : comps.data(), (void (*)(void))ZeroDisplacement, nullptr, nullptr, nullptr));
-  }
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb, PetscInt *field)
 {
   PetscFunctionBegin;
@@ -74,7 +37,7 @@ PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb, PetscI
     PetscCall(DMGetLabel(dm, "boundary", &boundary));
     PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, "boundary", boundary, 1, &one, *field, 0, nullptr, (void (*)(void))MMSElasticityExact, nullptr, (void *)&sc.mmsAmplitude, nullptr));
   }
-  PetscCall(AddClamps(sc, dm, *field));
+  PetscCall(AddZeroDirichlet(dm, sc.clamp, *field, "-structure_clamp"));
   PetscCall(FieldCellsCreate(dm, sb.region, *field, sb.cells)); /* after the constraints: they set the global indices */
   if (sc.pressure != 0) {
     DMLabel loaded;

@@ -61,4 +61,23 @@ void LameSolution(const PetscReal x[3], const void *ctx, PetscReal u[3], PetscRe
   G[0] = f + g * x[0] * x[0], G[1] = G[3] = g * x[0] * x[1], G[4] = f + g * x[1] * x[1];
 }
 
+void PoiseuilleVelocity(const PetscReal x[3], const void *ctx, PetscReal u[3], PetscReal G[9])
+{
+  const Poiseuille &f = *(const Poiseuille *)ctx;
+  const PetscReal   c = f.dp / f.L / (4 * f.mu);
+  u[0] = u[1] = 0, u[2] = c * (f.R * f.R - x[0] * x[0] - x[1] * x[1]);
+  for (int k = 0; k < 9; k++) G[k] = 0;
+  G[6] = -2 * c * x[0], G[7] = -2 * c * x[1];
+}
+
+void PoiseuilleTraction(const Poiseuille &f, const PetscReal x[3], const PetscReal n[3], PetscReal t[3])
+{
+  PetscReal u[3], G[9], s[9];
+  PoiseuilleVelocity(x, &f, u, G);
+  const PetscReal p = f.dp * (1 - x[2] / f.L);
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) s[i * 3 + j] = -p * (i == j) + f.mu * (G[i * 3 + j] + G[j * 3 + i]);
+  for (int i = 0; i < 3; i++) t[i] = s[i * 3] * n[0] + s[i * 3 + 1] * n[1] + s[i * 3 + 2] * n[2];
+}
+
 } // namespace fsi

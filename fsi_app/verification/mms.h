@@ -24,6 +24,15 @@ struct Lame {
 };
 Lame LameCylinder(PetscReal E, PetscReal nu, PetscReal p, PetscReal Ri, PetscReal Ro);
 
+/* Hagen-Poiseuille flow along z in a tube of radius R, length L: u_z = G (R^2 - r^2) / (4 mu),
+   p = dp (1 - z / L), G = dp / L; flux pi R^4 dp / (8 mu L). */
+struct Poiseuille {
+  PetscReal R, L, dp, mu;
+};
+/* sigma n = (-p I + mu (grad u + grad u^T)) n of the exact flow */
+void PoiseuilleTraction(const Poiseuille &f, const PetscReal x[3], const PetscReal n[3], PetscReal t[3]);
+void PoiseuilleVelocity(const PetscReal x[3], const void *ctx, PetscReal u[3], PetscReal G[9]);
+
 /* Value and gradient of an exact solution at x: the form verification/errors.h integrates. */
 void MMSElasticitySolution(const PetscReal x[3], const void *ctx, PetscReal u[3], PetscReal G[9]);
 void LameSolution(const PetscReal x[3], const void *ctx, PetscReal u[3], PetscReal G[9]);
