@@ -13,7 +13,8 @@ PetscErrorCode NodePosition(DM dm, PetscInt point, PetscReal x[3]);
 /* Set the constrained dofs of `local` from the essential conditions registered with
    DMAddBoundary(): each condition's function evaluated at the nodes in the closure of its
    label's points. (DMPlexInsertBoundaryValues() projects through every cell's PetscFE and fails
-   for fields that live on a region.) */
+   for fields that live on a region.) The nodes are found on the first call and kept on the DM:
+   add every boundary condition before. */
 PetscErrorCode InsertEssentialValues(DM dm, PetscReal t, Vec local);
 
 /* The six rigid-body modes of vector field `field`, orthonormalised, as a near-null space. */
