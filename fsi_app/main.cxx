@@ -186,9 +186,19 @@ int main(int argc, char **argv)
   for (const auto &r : report.steps) newton += r.newton, krylov += r.krylov, cuts += r.cuts;
   const PetscInt solved = (PetscInt)report.steps.size();
   if (dynamic && solved) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "steps %" PetscInt_FMT " newton per step %.2f krylov per newton %.2f\n", solved, (double)newton / solved, newton ? (double)krylov / newton : 0.0));
-  PetscReal dmax;
-  PetscCall(VecNorm(d, NORM_INFINITY, &dmax));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "newton %" PetscInt_FMT " krylov %" PetscInt_FMT " reason %s time %.3f s max %s %.6e\n", newton, krylov, SNESConvergedReasons[reason], t1 - t0, sc.physics == PHYSICS_STRUCTURE ? "displacement" : "unknown", (double)dmax));
+  PetscReal dmax; /* the largest displacement, or velocity */
+  {
+    IS      *is;
+    PetscInt nf;
+    Vec      part;
+    PetscCall(DMCreateFieldIS(dm, &nf, nullptr, &is));
+    PetscCall(VecGetSubVector(d, is[field], &part));
+    PetscCall(VecNorm(part, NORM_INFINITY, &dmax));
+    PetscCall(VecRestoreSubVector(d, is[field], &part));
+    for (PetscInt f = 0; f < nf; f++) PetscCall(ISDestroy(&is[f]));
+    PetscCall(PetscFree(is));
+  }
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "newton %" PetscInt_FMT " krylov %" PetscInt_FMT " reason %s time %.3f s max %s %.6e\n", newton, krylov, SNESConvergedReasons[reason], t1 - t0, sc.physics == PHYSICS_STRUCTURE ? "displacement" : "velocity", (double)dmax));
   char cure[160]; /* what to change: the load increments (statics) or the time step */
   if (dynamic) PetscCall(PetscSNPrintf(cure, sizeof(cure), "reduce the time step (-dt %g now) or allow more halvings (-max_step_cuts %" PetscInt_FMT " now)", (double)sc.dt, sc.maxCuts));
   else PetscCall(PetscSNPrintf(cure, sizeof(cure), "apply the load in more increments (-structure_load_steps %" PetscInt_FMT " now) or allow more halvings (-max_step_cuts %" PetscInt_FMT " now)", sc.loadSteps, sc.maxCuts));
@@ -198,13 +208,13 @@ int main(int argc, char **argv)
     KSPConvergedReason kreason;
     PetscCall(SNESGetKSP(snes, &ksp));
     PetscCall(KSPGetConvergedReason(ksp, &kreason));
-    SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "the linear solver failed in step %" PetscInt_FMT " (%s, also on the step halved %" PetscInt_FMT " times); see -ksp_monitor_true_residual: CG needs a symmetric preconditioner (PCASM: -pc_asm_type basic), a looser -ksp_rtol or a stronger preconditioner may be needed", report.steps.back().step, KSPConvergedReasons[kreason], sc.maxCuts);
+    SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "the linear solver failed in step %" PetscInt_FMT " (%s, also on the step halved %" PetscInt_FMT " times); see -ksp_monitor_true_residual; CG needs a symmetric preconditioner (PCASM: -pc_asm_type basic); -pc_type lu -pc_factor_mat_solver_type mumps tells whether the preconditioner is the cause", report.steps.back().step, KSPConvergedReasons[kreason], sc.maxCuts);
   }
   PetscCheck(reason >= 0, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton did not converge in step %" PetscInt_FMT " (%s, also on the step halved %" PetscInt_FMT " times); see -snes_monitor, or %s", solved ? report.steps.back().step : 0, SNESConvergedReasons[reason], sc.maxCuts, cure);
   PetscReal dnorm;
   PetscCall(VecNorm(d, NORM_2, &dnorm));
   if (sc.physics == PHYSICS_STRUCTURE) report.results.insert(report.results.end(), {{"max_displacement", dmax}, {"displacement_norm", dnorm}});
-  else report.results.insert(report.results.end(), {{"max_unknown", dmax}, {"solution_norm", dnorm}});
+  else report.results.insert(report.results.end(), {{"max_velocity", dmax}, {"solution_norm", dnorm}});
   PetscCall(Verify(sc, dm, sb, fb, d, report));
   PetscCall(PhasesMeasure(PETSC_COMM_WORLD, t1 - t0, report.phases));
   const Phases &p = report.phases;

@@ -34,8 +34,9 @@ PetscErrorCode SetUpFluid(const Scene &sc, DM dm, FluidBlock &fb, PetscInt *velo
     for (const char *g : {sc.inlet, sc.outlet}) PetscCall(addTraction(g, [flow](const PetscReal x[3], const PetscReal n[3], PetscReal, PetscReal t[3]) { PoiseuilleTraction(flow, x, n, t); }));
   } else if (sc.inletPressure != 0) {
     const PetscReal p = sc.inletPressure, until = sc.pulseEnd;
-    PetscCall(addTraction(sc.inlet, [p, until](const PetscReal *, const PetscReal n[3], PetscReal time, PetscReal t[3]) {
-      const PetscReal pt = until == 0 || time <= until + 1e-12 ? p : 0.0;
+    const PetscBool steady = (PetscBool)!sc.Dynamic(); /* time is then the load fraction: continuation in p */
+    PetscCall(addTraction(sc.inlet, [p, until, steady](const PetscReal *, const PetscReal n[3], PetscReal time, PetscReal t[3]) {
+      const PetscReal pt = steady ? p * time : (until == 0 || time <= until + 1e-12 ? p : 0.0);
       for (int d = 0; d < 3; d++) t[d] = -pt * n[d];
     }));
   }
