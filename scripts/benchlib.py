@@ -6,13 +6,14 @@ import signal
 import subprocess
 
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # scenes name their files from here
 
 
 def run(cmd, timeout=None):
     """Output (stdout and stderr) of a command line. After `timeout` seconds the command's process
     group (mpiexec and its ranks) is ended and the output ends with "benchlib: TIMEOUT"."""
     p = subprocess.Popen(cmd.split(), env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                         start_new_session=True)
+                         start_new_session=True, cwd=TOP)
     try:
         return p.communicate(timeout=timeout)[0]
     except subprocess.TimeoutExpired:
