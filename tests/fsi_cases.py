@@ -402,6 +402,20 @@ def fluid_high_reynolds():
     assert "-pc_type lu -pc_factor_mat_solver_type mumps" in out or "-structure_load_steps" in out
     assert not re.search(r"max velocity (nan|inf)", out, re.I)
 
+
+@case
+def app_help():
+    """-help lists every application option the README's options table documents, each with its
+    default (PETSc prints <default>)."""
+    out = run([APP, "-help", "-physics", "fluid"], 1, fail=None)
+    readme = open(os.path.join(MESHES, "..", "README.md")).read()
+    table = readme[readme.index("### Options (defaults in brackets; `-help` prints them all)"):readme.index("### How it is built")]
+    first = [line.split("|")[1] for line in table.splitlines() if line.startswith("| `")]  # the option column
+    options = sorted({o for cell in first for o in re.findall(r"`(-[a-z_0-9]+)", cell)})
+    missing = [o for o in options if not re.search(r"^\s+" + re.escape(o) + r"[ :]+<", out, re.M)]
+    print(len(options), "options documented; missing from -help:", missing)
+    assert len(options) >= 35 and not missing, missing
+
 @case
 def structure_bad_options():
     mesh = os.path.join(MESHES, "tube1_L0.msh")
