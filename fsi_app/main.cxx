@@ -11,6 +11,7 @@ static const char help[] = "fsi_app: monolithic fluid-structure interaction on P
 #include "solver/subdomains.h"
 #include "solver/time_loop.h"
 #include "fluid/setup.h"
+#include "geometry/harmonic.h"
 #include "structure/setup.h"
 #include "verification/errors.h"
 #include "verification/mms.h"
@@ -26,6 +27,9 @@ static PetscErrorCode CreateMesh(const Scene &sc, DM *dm)
     for (const auto &g : SplitList(sc.clamp)) required.push_back(g.substr(0, g.find(':')));
     if (sc.region[0]) required.push_back(sc.region);
     if (sc.pressure != 0) required.push_back(sc.loaded);
+  } else if (sc.physics == PHYSICS_GEOMETRY) {
+    for (const auto &g : SplitList(sc.slip)) required.push_back(g.substr(0, g.find(':')));
+    required.push_back(sc.fluidRegion), required.push_back(sc.interface);
   } else {
     for (const auto &g : SplitList(sc.noslip)) required.push_back(g.substr(0, g.find(':')));
     required.push_back(sc.fluidRegion);
@@ -81,14 +85,15 @@ static PetscErrorCode CreateSolver(const Scene &sc, DM dm, PetscInt field, SNES 
 }
 
 /* Errors against the exact solution of the verification scenes, printed and reported. */
-static PetscErrorCode Verify(const Scene &sc, DM dm, const StructureBlock &sb, const FluidBlock &fb, Vec d, RunReport &report)
+static PetscErrorCode Verify(const Scene &sc, DM dm, const StructureBlock &sb, const FluidBlock &fb, const GeometryBlock &gb, Vec d, RunReport &report)
 {
   Errors     e;
   Lame       lame = LameCylinder(sc.E, sc.nu, sc.pressure, sc.lameRadii[0], sc.lameRadii[1]);
   Poiseuille flow = {sc.poiseuille[0], sc.poiseuille[1], sc.poiseuille[2], sc.muFluid};
 
   PetscFunctionBegin;
-  if (sc.physics == PHYSICS_FLUID && flow.R > 0) {
+  if (sc.physics == PHYSICS_GEOMETRY) PetscCall(ComputeErrors(dm, gb.cells, d, 0, HarmonicQuadraticSolution, &sc.geometryAmplitude, e));
+  else if (sc.physics == PHYSICS_FLUID && flow.R > 0) {
     const PetscReal exact = PETSC_PI * PetscPowReal(flow.R, 4) * flow.dp / (8 * flow.mu * flow.L);
     PetscReal       Q;
     PetscCall(FluidFlux(dm, fb, fb.tractions[1].faces, d, &Q));
@@ -109,6 +114,7 @@ int main(int argc, char **argv)
   Scene          sc;
   StructureBlock sb;
   FluidBlock     fb;
+  GeometryBlock  gb;
   TimeHistory    history;
   DM             dm;
   SNES           snes;
@@ -124,11 +130,13 @@ int main(int argc, char **argv)
   PetscCall(CreateMesh(sc, &dm));
   PetscInt pressureField = -1;
   if (sc.physics == PHYSICS_STRUCTURE) PetscCall(SetUpStructure(sc, dm, sb, &field));
+  else if (sc.physics == PHYSICS_GEOMETRY) PetscCall(SetUpGeometry(sc, dm, gb, &field));
   else PetscCall(SetUpFluid(sc, dm, fb, &field, &pressureField));
   PetscCall(DMCreateGlobalVector(dm, &d));
   PetscCall(PetscObjectSetName((PetscObject)d, "solution"));
   PetscCall(VecGetSize(d, &N));
   if (sc.physics == PHYSICS_STRUCTURE) report.unknowns = {{"structure", N}, {"fluid", 0}, {"pressure", 0}, {"geometry", 0}, {"multiplier", 0}};
+  else if (sc.physics == PHYSICS_GEOMETRY) report.unknowns = {{"structure", 0}, {"fluid", 0}, {"pressure", 0}, {"geometry", N}, {"multiplier", 0}};
   else {
     IS      *is;
     PetscInt nf, nu, np;
@@ -160,6 +168,7 @@ int main(int argc, char **argv)
     std::vector<PetscReal> times; /* frames a run restarted at step `first` has written */
     for (PetscInt k = 0; sc.restart[0] && k <= first; k += sc.outputEvery) times.push_back(k * step);
     if (sc.physics == PHYSICS_STRUCTURE) PetscCall(XdmfOpen(sc.output, dm, sb.cells, "displacement", times, series));
+    else if (sc.physics == PHYSICS_GEOMETRY) PetscCall(XdmfOpen(sc.output, dm, gb.cells, "displacement", times, series));
     else PetscCall(XdmfOpen(sc.output, dm, fb.velocity, "velocity", times, series));
     if (!sc.restart[0]) PetscCall(XdmfWriteFrame(series, 0, d));
   }
@@ -198,7 +207,7 @@ int main(int argc, char **argv)
     for (PetscInt f = 0; f < nf; f++) PetscCall(ISDestroy(&is[f]));
     PetscCall(PetscFree(is));
   }
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "newton %" PetscInt_FMT " krylov %" PetscInt_FMT " reason %s time %.3f s max %s %.6e\n", newton, krylov, SNESConvergedReasons[reason], t1 - t0, sc.physics == PHYSICS_STRUCTURE ? "displacement" : "velocity", (double)dmax));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "newton %" PetscInt_FMT " krylov %" PetscInt_FMT " reason %s time %.3f s max %s %.6e\n", newton, krylov, SNESConvergedReasons[reason], t1 - t0, sc.physics == PHYSICS_FLUID ? "velocity" : "displacement", (double)dmax));
   char cure[160]; /* what to change: the load increments (statics) or the time step */
   if (dynamic) PetscCall(PetscSNPrintf(cure, sizeof(cure), "reduce the time step (-dt %g now) or allow more halvings (-max_step_cuts %" PetscInt_FMT " now)", (double)sc.dt, sc.maxCuts));
   else PetscCall(PetscSNPrintf(cure, sizeof(cure), "apply the load in more increments (-structure_load_steps %" PetscInt_FMT " now) or allow more halvings (-max_step_cuts %" PetscInt_FMT " now)", sc.loadSteps, sc.maxCuts));
@@ -213,9 +222,9 @@ int main(int argc, char **argv)
   PetscCheck(reason >= 0, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton did not converge in step %" PetscInt_FMT " (%s, also on the step halved %" PetscInt_FMT " times); see -snes_monitor, or %s", solved ? report.steps.back().step : 0, SNESConvergedReasons[reason], sc.maxCuts, cure);
   PetscReal dnorm;
   PetscCall(VecNorm(d, NORM_2, &dnorm));
-  if (sc.physics == PHYSICS_STRUCTURE) report.results.insert(report.results.end(), {{"max_displacement", dmax}, {"displacement_norm", dnorm}});
+  if (sc.physics != PHYSICS_FLUID) report.results.insert(report.results.end(), {{"max_displacement", dmax}, {"displacement_norm", dnorm}});
   else report.results.insert(report.results.end(), {{"max_velocity", dmax}, {"solution_norm", dnorm}});
-  PetscCall(Verify(sc, dm, sb, fb, d, report));
+  PetscCall(Verify(sc, dm, sb, fb, gb, d, report));
   PetscCall(PhasesMeasure(PETSC_COMM_WORLD, t1 - t0, report.phases));
   const Phases &p = report.phases;
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "seconds: assembly %.3f preconditioner setup %.3f krylov %.3f total %.3f; peak memory %.1f MiB\n", p.assembly, p.setup, p.krylov, p.total, p.peakMiB));

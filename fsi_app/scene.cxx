@@ -2,7 +2,7 @@
 
 namespace fsi {
 
-const char *const PhysicsNames[] = {"structure", "fluid", "Physics", "PHYSICS_", nullptr};
+const char *const PhysicsNames[] = {"structure", "fluid", "geometry", "Physics", "PHYSICS_", nullptr};
 
 PetscErrorCode ReadScene(Scene &sc)
 {
@@ -11,7 +11,7 @@ PetscErrorCode ReadScene(Scene &sc)
 
   PetscFunctionBegin;
   PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "fsi_app scene", nullptr);
-  PetscCall(PetscOptionsEnum("-physics", "the blocks to solve: the wall alone or the fluid alone (fsi: a later issue)", nullptr, PhysicsNames, (PetscEnum)sc.physics, (PetscEnum *)&sc.physics, nullptr));
+  PetscCall(PetscOptionsEnum("-physics", "the block to solve: the wall, the fluid, or the harmonic extension alone (fsi: a later issue)", nullptr, PhysicsNames, (PetscEnum)sc.physics, (PetscEnum *)&sc.physics, nullptr));
   PetscCall(PetscOptionsString("-mesh", "gmsh mesh file", nullptr, sc.mesh, sc.mesh, sizeof(sc.mesh), nullptr));
   PetscCall(PetscOptionsInt("-refine", "uniform refinements of the mesh after distribution", nullptr, sc.refine, &sc.refine, nullptr));
   PetscCall(PetscOptionsString("-structure_region", "physical group of the wall's cells (empty: every cell)", nullptr, sc.region, sc.region, sizeof(sc.region), nullptr));
@@ -40,6 +40,9 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(PetscOptionsReal("-fluid_inlet_pressure", "normal stress: traction -p n on the faces of -fluid_inlet (dyn/cm^2); the pulse ends at -structure_pressure_until", nullptr, sc.inletPressure, &sc.inletPressure, nullptr));
   PetscCall(PetscOptionsString("-fluid_inlet", "group of the inflow faces", nullptr, sc.inlet, sc.inlet, sizeof(sc.inlet), nullptr));
   PetscCall(PetscOptionsString("-fluid_outlet", "group of the outflow faces (stress-free)", nullptr, sc.outlet, sc.outlet, sizeof(sc.outlet), nullptr));
+  PetscCall(PetscOptionsString("-geometry_interface", "group where the fluid's mesh displacement is the structure's", nullptr, sc.interface, sc.interface, sizeof(sc.interface), nullptr));
+  PetscCall(PetscOptionsString("-geometry_slip", "groups where the mesh slides: the listed components are zero (planar ends: group:z)", nullptr, sc.slip, sc.slip, sizeof(sc.slip), nullptr));
+  PetscCall(PetscOptionsReal("-geometry_amplitude", "amplitude a of the prescribed interface displacement a (x^2 - y^2, -2xy, 0) (-physics geometry)", nullptr, sc.geometryAmplitude, &sc.geometryAmplitude, nullptr));
   n = 3;
   PetscCall(PetscOptionsRealArray("-poiseuille", "verification: Hagen-Poiseuille flow in a tube of radius R and length L along z driven by a pressure drop: R,L,dp", nullptr, sc.poiseuille, &n, &set));
   PetscCheck(!set || (n == 3 && sc.poiseuille[0] > 0 && sc.poiseuille[1] > 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-poiseuille: give R,L,dp with R > 0 and L > 0");

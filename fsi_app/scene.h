@@ -9,7 +9,7 @@
 
 namespace fsi {
 
-enum Physics { PHYSICS_STRUCTURE = 0, PHYSICS_FLUID = 1 };
+enum Physics { PHYSICS_STRUCTURE = 0, PHYSICS_FLUID = 1, PHYSICS_GEOMETRY = 2 };
 extern const char *const PhysicsNames[];
 
 struct Scene {
@@ -39,6 +39,10 @@ struct Scene {
   PetscReal inletPressure = 0;              /* normal stress -p n on the inlet group (dyn/cm^2) */
   char      inlet[64] = "inlet", outlet[64] = "outlet";
   PetscReal poiseuille[3] = {0, 0, 0};      /* verification: R, L, pressure drop */
+  /* geometry (harmonic extension) */
+  char      interface[64]      = "interface";
+  char      slip[256]          = "inlet:z,outlet:z"; /* d . n = 0: the normal component of planar ends */
+  PetscReal geometryAmplitude  = 0.01;               /* of the interface displacement (verification field) */
   /* time, or load increments in statics */
   PetscReal  dt = 0, tFinal = 0.01;
   PetscInt   loadSteps = 1, maxCuts = 4;

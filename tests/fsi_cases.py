@@ -416,6 +416,21 @@ def app_help():
     print(len(options), "options documented; missing from -help:", missing)
     assert len(options) >= 35 and not missing, missing
 
+
+@case
+def geometry_harmonic():
+    """The geometry block alone: the harmonic extension into tube #1's fluid region of the
+    interface displacement a (x^2 - y^2, -2xy, 0), sliding on the planar ends (z component
+    zero): this field is harmonic and quadratic, so P2 reproduces it to the solver's tolerance;
+    only geometry unknowns are allocated; 1 and 2 ranks agree."""
+    for np in (1, 2):
+        out = run([APP, "-physics", "geometry", "-mesh", os.path.join(MESHES, "tube1_L0.msh"), "-snes_type", "ksponly", "-ksp_type", "cg",
+                   "-ksp_rtol", 1e-12, "-pc_type", "gamg"], np)
+        assert "unknowns: structure 0 fluid 0 pressure 0 geometry 2088 multiplier 0" in out, out
+        l2, h1 = (float(re.search(rf"{n} error \S+ relative (\S+)", out).group(1)) for n in ("L2", "H1"))
+        between(max(l2, h1), 0, 1e-10, f"relative L2 and H1 errors of the extension, {np} rank(s)")
+        between(int(re.search(r"krylov (\d+)", out).group(1)), 5, 30, "CG + GAMG iterations (vector Laplacian)")
+
 @case
 def structure_bad_options():
     mesh = os.path.join(MESHES, "tube1_L0.msh")
