@@ -96,4 +96,16 @@ PetscErrorCode CellFacesCreate(DM dm, const FieldCells &cells, DMLabel label, st
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode AssembleOperators(Mat J, Mat P)
+{
+  PetscFunctionBegin;
+  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+  if (J != P) {
+    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  }
+  PetscFunctionReturn(0);
+}
+
 } // namespace fsi

@@ -53,4 +53,7 @@ inline void Scatter(const FieldCells &cells, PetscInt k, const PetscReal *re, Pe
     for (PetscInt i = 0; i < cells.nc; i++) f[lo[a] + i] += re[cells.nc * a + i];
 }
 
+/* Final assembly of the preconditioning matrix P and, if it is another matrix, of J. */
+PetscErrorCode AssembleOperators(Mat J, Mat P);
+
 } // namespace fsi

@@ -61,6 +61,25 @@ static PetscErrorCode Zero(PetscInt, PetscReal, const PetscReal[], PetscInt nc, 
   return 0;
 }
 
+PetscErrorCode LabelValues(DMLabel label, std::vector<PetscInt> &ids)
+{
+  IS              values;
+  PetscInt        nv, any, gany;
+  const PetscInt *v;
+
+  PetscFunctionBegin;
+  PetscCall(DMLabelGetValueIS(label, &values));
+  PetscCall(ISGetLocalSize(values, &nv));
+  PetscCall(ISGetIndices(values, &v));
+  ids.assign(v, v + nv);
+  PetscCall(ISRestoreIndices(values, &v));
+  PetscCall(ISDestroy(&values));
+  any = nv;
+  PetscCallMPI(MPIU_Allreduce(&any, &gany, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)label)));
+  if (ids.empty() && gany) ids.push_back(0); /* the label's values live on other ranks: DMAddBoundary is collective */
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode AddZeroDirichlet(DM dm, const char *groups, PetscInt field, const char *option)
 {
   PetscFunctionBegin;
@@ -72,20 +91,10 @@ PetscErrorCode AddZeroDirichlet(DM dm, const char *groups, PetscInt field, const
         PetscCheck(c == 'x' || c == 'y' || c == 'z', PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s %s: components are x, y, z", option, spec.c_str());
         comps.push_back(c - 'x');
       }
-    DMLabel         group;
-    IS              values;
-    PetscInt        nv;
-    const PetscInt *v;
+    DMLabel               group;
+    std::vector<PetscInt> ids;
     PetscCall(DMGetLabel(dm, g.c_str(), &group));
-    PetscCall(DMLabelGetValueIS(group, &values));
-    PetscCall(ISGetLocalSize(values, &nv));
-    PetscCall(ISGetIndices(values, &v));
-    std::vector<PetscInt> ids(v, v + nv);
-    PetscCall(ISRestoreIndices(values, &v));
-    PetscCall(ISDestroy(&values));
-    PetscInt any = nv, gany;
-    PetscCallMPI(MPIU_Allreduce(&any, &gany, 1, MPIU_INT, MPI_MAX, PETSC_COMM_WORLD));
-    if (ids.empty() && gany) ids.push_back(0); /* the label's value lives on other ranks */
+    PetscCall(LabelValues(group, ids));
     PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, spec.c_str(), group, (PetscInt)ids.size(), ids.data(), field, (PetscInt)comps.size(), comps.empty() ? nullptr : comps.data(), (void (*)(void))Zero, nullptr, nullptr, nullptr));
   }
   PetscFunctionReturn(0);

@@ -16,6 +16,10 @@ PetscErrorCode AddLagrangeField(DM dm, const std::string &name, const std::strin
    on b); `option` names the option in error messages. */
 PetscErrorCode AddZeroDirichlet(DM dm, const char *groups, PetscInt field, const char *option);
 
+/* The values of a label on every rank (a rank without points of it gets one, since
+   DMAddBoundary is collective). */
+PetscErrorCode LabelValues(DMLabel label, std::vector<PetscInt> &ids);
+
 /* "a,b:xz" -> {"a", "b:xz"} */
 std::vector<std::string> SplitList(const char *s);
 

@@ -165,12 +165,7 @@ PetscErrorCode FluidJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
     PetscCall(MatSetValues(P, n, idx, n, idx, K, ADD_VALUES));
   }
   PetscCall(VecRestoreArrayRead(Xl, &x));
-  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
-  if (J != P) {
-    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
-    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
-  }
+  PetscCall(AssembleOperators(J, P));
   PetscFunctionReturn(0);
 }
 

@@ -1,4 +1,5 @@
 #include "harmonic.h"
+#include "discretization/fields.h"
 #include "discretization/nodes.h"
 
 namespace fsi {
@@ -74,38 +75,23 @@ static PetscErrorCode GeometryJacobian(DM dm, Vec, Mat J, Mat P, void *ctx)
     }
     PetscCall(MatSetValues(P, 30, &gb.cells.global[30 * k], 30, &gb.cells.global[30 * k], K, ADD_VALUES));
   }
-  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
-  if (J != P) {
-    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
-    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
-  }
+  PetscCall(AssembleOperators(J, P));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode SetUpGeometry(const Scene &sc, DM dm, GeometryBlock &gb, PetscInt *field)
 {
   DMLabel region, interface;
-  IS      values;
 
   PetscFunctionBegin;
   PetscCall(AddLagrangeField(dm, "geometry", sc.fluidRegion, 3, 2, field));
   PetscCall(DMCreateDS(dm));
   PetscCall(DMGetLabel(dm, sc.interface, &interface));
-  PetscCall(DMLabelGetValueIS(interface, &values));
   { /* d_f = the interface displacement on the interface (here: the verification field) */
-    PetscInt        nv;
-    const PetscInt *v;
-    PetscCall(ISGetLocalSize(values, &nv));
-    PetscCall(ISGetIndices(values, &v));
-    std::vector<PetscInt> ids(v, v + nv);
-    PetscCall(ISRestoreIndices(values, &v));
-    PetscInt any = nv, gany;
-    PetscCallMPI(MPIU_Allreduce(&any, &gany, 1, MPIU_INT, MPI_MAX, PETSC_COMM_WORLD));
-    if (ids.empty() && gany) ids.push_back(0); /* the label's value lives on other ranks */
+    std::vector<PetscInt> ids;
+    PetscCall(LabelValues(interface, ids));
     PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, "interface displacement", interface, (PetscInt)ids.size(), ids.data(), *field, 0, nullptr, (void (*)(void))HarmonicQuadratic, nullptr, (void *)&sc.geometryAmplitude, nullptr));
   }
-  PetscCall(ISDestroy(&values));
   PetscCall(AddZeroDirichlet(dm, sc.slip, *field, "-geometry_slip"));
   PetscCall(DMGetLabel(dm, (std::string("region_") + sc.fluidRegion).c_str(), &region));
   PetscCall(FieldCellsCreate(dm, region, *field, gb.cells));

@@ -215,12 +215,7 @@ PetscErrorCode StructureJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
       PetscCall(MatSetValues(P, 30, &sb.cells.global[30 * face.k], 30, &sb.cells.global[30 * face.k], K, ADD_VALUES));
     }
   PetscCall(VecRestoreArrayRead(Xl, &x));
-  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
-  if (J != P) {
-    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
-    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
-  }
+  PetscCall(AssembleOperators(J, P));
   PetscFunctionReturn(0);
 }
 
