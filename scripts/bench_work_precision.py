@@ -64,9 +64,9 @@ def plot(rows):
     fig, axes = plt.subplots(1, len(SCENES), figsize=(11, 4.2))
     for ax, scene in zip(axes, SCENES):
         for pc in PCS:
-            pts = sorted((float(r["seconds"]), float(r["l2_relative"])) for r in rows if r["scene"] == scene and r["preconditioner"] == pc)
-            if pts:
-                ax.loglog(*zip(*pts), "o-", label=pc)
+            pts = sorted((int(r["dofs"]), float(r["seconds"]), float(r["l2_relative"])) for r in rows if r["scene"] == scene and r["preconditioner"] == pc)
+            if pts:  # joined in the order of the mesh levels
+                ax.loglog([p[1] for p in pts], [p[2] for p in pts], "o-", label=pc)
         ax.set_title(f"{scene}, P2, 2 ranks")
         ax.set_xlabel("time to solution (s)")
         ax.set_ylabel("relative L2 error")
