@@ -27,6 +27,7 @@ static PetscErrorCode CreateMesh(const Scene &sc, DM *dm)
     for (const auto &g : SplitList(sc.clamp)) required.push_back(g.substr(0, g.find(':')));
     if (sc.region[0]) required.push_back(sc.region);
     if (sc.pressure != 0) required.push_back(sc.loaded);
+    if (sc.tractionGroup[0]) required.push_back(sc.tractionGroup);
   } else if (sc.physics == PHYSICS_GEOMETRY) {
     for (const auto &g : SplitList(sc.slip)) required.push_back(g.substr(0, g.find(':')));
     required.push_back(sc.fluidRegion), required.push_back(sc.interface);
@@ -176,7 +177,7 @@ int main(int argc, char **argv)
   TimeLoop loop;
   loop.snes = snes, loop.history = &history, loop.steps = sc.Steps(), loop.maxCuts = sc.maxCuts, loop.dynamic = dynamic;
   loop.setTime   = [&](PetscReal t) {
-    sb.pressure = StructurePressure(sc, t), fb.time = t;
+    sb.load = StructureLoadFactor(sc, t), sb.pressure = sc.pressure * sb.load, fb.time = t;
     return PetscErrorCode(0);
   };
   loop.afterStep = [&](PetscInt k, PetscReal t, Vec x) -> PetscErrorCode {

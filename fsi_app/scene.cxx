@@ -19,6 +19,14 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(PetscOptionsReal("-structure_pressure", "pressure on the faces of -structure_pressure_group (dyn/cm^2)", nullptr, sc.pressure, &sc.pressure, nullptr));
   PetscCall(PetscOptionsString("-structure_pressure_group", "group of faces the pressure acts on", nullptr, sc.loaded, sc.loaded, sizeof(sc.loaded), nullptr));
   PetscCall(PetscOptionsBool("-structure_pressure_follower", "the pressure acts on the deformed face (follower load) rather than the reference one", nullptr, sc.follower, &sc.follower, nullptr));
+  n = 3;
+  PetscCall(PetscOptionsRealArray("-structure_body_force", "body force bx,by,bz per unit reference volume (dyn/cm^3)", nullptr, sc.bodyForce, &n, &set));
+  PetscCheck(!set || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_body_force: give bx,by,bz (got %" PetscInt_FMT " values)", n);
+  n = 3;
+  PetscCall(PetscOptionsRealArray("-structure_traction", "dead traction tx,ty,tz per unit reference area on -structure_traction_group (dyn/cm^2)", nullptr, sc.traction, &n, &set));
+  PetscCheck(!set || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_traction: give tx,ty,tz (got %" PetscInt_FMT " values)", n);
+  PetscCall(PetscOptionsString("-structure_traction_group", "group of faces the traction acts on", nullptr, sc.tractionGroup, sc.tractionGroup, sizeof(sc.tractionGroup), nullptr));
+  PetscCheck(!(sc.traction[0] != 0 || sc.traction[1] != 0 || sc.traction[2] != 0) || sc.tractionGroup[0], PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_traction: name the faces it acts on with -structure_traction_group");
   PetscCall(PetscOptionsReal("-structure_pressure_ramp", "the pressure rises smoothly (sin^2) from 0 over this time (s); 0: a step at t = 0", nullptr, sc.ramp, &sc.ramp, nullptr));
   PetscCall(PetscOptionsReal("-structure_pressure_until", "the pressure acts while t <= this (s); 0: always", nullptr, sc.pulseEnd, &sc.pulseEnd, nullptr));
   PetscCall(PetscOptionsEnum("-material", "constitutive law of the wall", nullptr, MaterialNames, (PetscEnum)sc.material, (PetscEnum *)&sc.material, nullptr));

@@ -23,6 +23,9 @@ struct Scene {
   PetscReal pressure   = 0;   /* on the faces of group `loaded` */
   char      loaded[64] = "interface";
   PetscBool follower   = PETSC_FALSE;
+  PetscReal bodyForce[3] = {0, 0, 0};         /* per unit reference volume (dyn/cm^3) */
+  PetscReal traction[3]  = {0, 0, 0};         /* dead traction per unit reference area (dyn/cm^2) */
+  char      tractionGroup[64] = "";
   PetscReal pulseEnd   = 0;   /* the pressure acts for t <= pulseEnd (0: always) */
   PetscReal ramp       = 0;   /* the pressure rises as sin^2(pi t / 2 ramp) until t = ramp (0: at once) */
   Material  material   = LINEAR_ELASTIC;

@@ -431,6 +431,21 @@ def geometry_harmonic():
         between(max(l2, h1), 0, 1e-10, f"relative L2 and H1 errors of the extension, {np} rank(s)")
         between(int(re.search(r"krylov (\d+)", out).group(1)), 5, 30, "CG + GAMG iterations (vector Laplacian)")
 
+
+@case
+def structure_loads():
+    """Loads: a dead traction -p n on a face equals the pressure p there (to round-off); the body
+    force scales linearly and its load increments reach the one-step state (linear law)."""
+    cube = ["-mesh", os.path.join(MESHES, "cube_L0.msh"), "-structure_clamp", "x0", "-snes_type", "ksponly", "-ksp_type", "preonly", "-pc_type", "lu"]
+    p = solve(*cube, "-structure_pressure", 0.01, "-structure_pressure_group", "x1")["dmax"]
+    t = solve(*cube, "-structure_traction", "-0.01,0,0", "-structure_traction_group", "x1")["dmax"]
+    between(t / p, 1 - 1e-10, 1 + 1e-10, "traction / pressure displacement")
+    g = [solve(*cube, "-structure_body_force", f"0,0,{-0.01 * k}", *extra)["dmax"] for k, extra in ((1, []), (2, []), (2, ["-structure_load_steps", 4]))]
+    between(g[1] / g[0], 2 - 1e-10, 2 + 1e-10, "doubled body force / body force displacement")
+    between(g[2] / g[1], 1 - 1e-10, 1 + 1e-10, "4 load steps / 1 step")
+    out = run([APP] + cube + ["-structure_traction", "1,0,0"], 1, fail=True)
+    assert "-structure_traction: name the faces it acts on with -structure_traction_group" in out
+
 @case
 def structure_bad_options():
     mesh = os.path.join(MESHES, "tube1_L0.msh")

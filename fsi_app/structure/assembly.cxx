@@ -147,10 +147,24 @@ PetscErrorCode StructureResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
         PointOf(g, l, xq);
         MMSBodyForce(xq, sb.mms, sb.law.tangent, p, b);
       }
+      for (int i = 0; i < 3; i++) b[i] += sb.load * sb.bodyForce[i];
       for (int a = 0; a < 10; a++)
         for (int i = 0; i < 3; i++) re[3 * a + i] += wq * (P[i * 3] * dN[a][0] + P[i * 3 + 1] * dN[a][1] + P[i * 3 + 2] * dN[a][2] - b[i] * N[a]);
     }
     Scatter(sb.cells, k, re, f);
+  }
+  for (const CellFace &face : sb.tractionFaces) { /* - int t . v over the reference faces */
+    const CellGeometry &g = sb.cells.geom[face.k];
+    PetscReal           de[30] = {0}, re[30] = {0};
+    for (PetscInt q = 0; q < sb.faceRule.nq; q++) {
+      PetscReal N[10], dN[10][3], ts[3], tt[3], nda[3];
+      FacePoint(sb, g, face, de, q, N, dN, ts, tt); /* de = 0: the reference face */
+      Cross(ts, tt, nda);
+      const PetscReal w = sb.faceRule.w[q] * sb.load * PetscSqrtReal(nda[0] * nda[0] + nda[1] * nda[1] + nda[2] * nda[2]);
+      for (int a = 0; a < 10; a++)
+        for (int i = 0; i < 3; i++) re[3 * a + i] -= w * N[a] * sb.traction[i];
+    }
+    Scatter(sb.cells, face.k, re, f);
   }
   if (sb.pressure != 0)
     for (const CellFace &face : sb.loaded) {

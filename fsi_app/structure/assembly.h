@@ -25,6 +25,10 @@ struct StructureBlock {
   PetscReal          pressure = 0;               /* on the faces of `loaded` (pushes along -n) */
   PetscBool          follower = PETSC_FALSE;     /* the pressure follows the deformed face */
   std::vector<CellFace> loaded;                    /* faces of -structure_pressure_group */
+  PetscReal          load = 1;                   /* factor of the body force and the traction (pressure: already in it) */
+  PetscReal          bodyForce[3] = {0, 0, 0};   /* per unit reference volume */
+  PetscReal          traction[3]  = {0, 0, 0};   /* dead, per unit reference area, on tractionFaces */
+  std::vector<CellFace> tractionFaces;
   PetscReal          rho      = 0;               /* density: inertia when history has past states */
   const TimeHistory *history  = nullptr;
 };

@@ -44,16 +44,22 @@ PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb, PetscI
     PetscCall(DMGetLabel(dm, sc.loaded, &loaded));
     PetscCall(CellFacesCreate(dm, sb.cells, loaded, sb.loaded));
   }
+  if (sc.tractionGroup[0]) {
+    DMLabel group;
+    PetscCall(DMGetLabel(dm, sc.tractionGroup, &group));
+    PetscCall(CellFacesCreate(dm, sb.cells, group, sb.tractionFaces));
+  }
+  for (int d = 0; d < 3; d++) sb.bodyForce[d] = sc.bodyForce[d], sb.traction[d] = sc.traction[d];
   PetscCall(DMSNESSetFunctionLocal(dm, StructureResidual, &sb));
   PetscCall(DMSNESSetJacobianLocal(dm, StructureJacobian, &sb));
   PetscFunctionReturn(0);
 }
 
-PetscReal StructurePressure(const Scene &sc, PetscReal t)
+PetscReal StructureLoadFactor(const Scene &sc, PetscReal t)
 {
-  if (!sc.Dynamic()) return sc.pressure * t;
+  if (!sc.Dynamic()) return t;
   if (sc.pulseEnd > 0 && t > sc.pulseEnd + 1e-12) return 0.0;
-  return t < sc.ramp ? sc.pressure * PetscSqr(PetscSinReal(PETSC_PI * t / (2 * sc.ramp))) : sc.pressure;
+  return t < sc.ramp ? PetscSqr(PetscSinReal(PETSC_PI * t / (2 * sc.ramp))) : 1.0;
 }
 
 } // namespace fsi

@@ -10,7 +10,8 @@ namespace fsi {
 /* `sc` must outlive the block (the manufactured solution's boundary values point into it). */
 PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb, PetscInt *field);
 
-/* The pressure on the loaded faces at time t (dynamics) or load fraction t (statics). */
-PetscReal StructurePressure(const Scene &sc, PetscReal t);
+/* The factor of every load (pressure, traction, body force) at time t (dynamics: the pulse and
+   its ramp) or load fraction t (statics). */
+PetscReal StructureLoadFactor(const Scene &sc, PetscReal t);
 
 } // namespace fsi
