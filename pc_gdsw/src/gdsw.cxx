@@ -52,20 +52,33 @@ PetscErrorCode GDSWSetUpLocalSolver(KSP ksp, const char *what, PetscInt gid)
   PetscFunctionReturn(0);
 }
 
-/* Symmetric as flagged by the application, or up to round-off in the assembled values. */
-static PetscErrorCode IsSymmetric(Mat A, PetscBool *symmetric)
+/* Symmetric as flagged by the application, or up to round-off in the assembled values. With
+   overlap every entry a_ij lies in some overlapping subdomain matrix with both i and j, so the
+   sequential subdomain matrices decide it: MatIsSymmetric() on the parallel operator gathers
+   its transposed off-process blocks (measured: 4 of 9 s of the set-up on a 100 k-dof wall). */
+static PetscErrorCode IsSymmetric(PC pc, PetscBool *symmetric)
 {
-  PetscBool set, flg;
+  PC_GDSW  *gd = (PC_GDSW *)pc->data;
+  PetscBool set, flg, all = PETSC_TRUE;
   PetscReal norm;
 
   PetscFunctionBegin;
-  PetscCall(MatIsSymmetricKnown(A, &set, &flg));
+  PetscCall(MatIsSymmetricKnown(gd->A, &set, &flg));
   if (set) {
     *symmetric = flg;
     PetscFunctionReturn(0);
   }
-  PetscCall(MatNorm(A, NORM_INFINITY, &norm));
-  PetscCall(MatIsSymmetric(A, 1e-12 * norm, symmetric));
+  if (gd->overlap == 0) {
+    PetscCall(MatNorm(gd->A, NORM_INFINITY, &norm));
+    PetscCall(MatIsSymmetric(gd->A, 1e-12 * norm, symmetric));
+    PetscFunctionReturn(0);
+  }
+  for (auto &s : *gd->sub) {
+    PetscCall(MatNorm(s.Aovl, NORM_INFINITY, &norm));
+    PetscCall(MatIsSymmetric(s.Aovl, 1e-12 * norm, &flg));
+    all = (PetscBool)(all && flg);
+  }
+  PetscCallMPI(MPIU_Allreduce(&all, symmetric, 1, MPIU_BOOL, MPI_LAND, PetscObjectComm((PetscObject)pc)));
   PetscFunctionReturn(0);
 }
 
@@ -192,10 +205,10 @@ static PetscErrorCode PCSetUp_GDSW(PC pc)
   if (fresh) {
     PetscCall(PCReset_GDSW(pc));
     PetscCall(GetAIJOperator(pc, MAT_INITIAL_MATRIX));
-    PetscCall(IsSymmetric(gd->A, &gd->symmetric));
     PetscCall(PetscLogEventBegin(GDSW_Decomposition, pc, 0, 0, 0));
     PetscCall(GDSWBuildDecomposition(pc));
     PetscCall(GDSWExtractSubdomainMatrices(pc, MAT_INITIAL_MATRIX));
+    PetscCall(IsSymmetric(pc, &gd->symmetric));
     PetscCall(PetscLogEventEnd(GDSW_Decomposition, pc, 0, 0, 0));
     PetscCall(PetscLogEventBegin(GDSW_Interface, pc, 0, 0, 0));
     PetscCall(GDSWBuildInterface(pc));
