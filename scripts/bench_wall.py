@@ -11,7 +11,10 @@ report), with the structure preconditioned by
                                    T (default 0.003 s): bench/results/wall_proxy.{csv,cmd}
   scripts/bench_wall.py seed [N]   tube1 at the seed's Table 1 size (357,927 dofs, made on
                                    demand), Neo-Hooke, dt 5e-4, N steps (default 1), peak memory:
-                                   bench/results/wall_seed.{csv,cmd}"""
+                                   bench/results/wall_seed.{csv,cmd}
+  scripts/bench_wall.py tubes [T]  the walls of tubes #2 and #3 (tube2_L0, tube3_L0), every
+                                   material, dt 5e-4 up to T (default 0.001 s), GDSW, OS1, PCASM:
+                                   bench/results/wall_tubes.{csv,cmd}"""
 import json
 import os
 import subprocess
@@ -42,7 +45,7 @@ def measure(mesh, material, dt, T, pc, subdomains):
            f"-structure_subdomains {subdomains} {MATERIALS[material]} -snes_rtol 1e-8 -snes_atol 1e-8 -ksp_rtol 1e-6 {PCS[pc]} "
            f"-report {report}")
     log = run(cmd, timeout=3600)
-    row = {"material": material, "dt": dt, "preconditioner": pc}
+    row = {"mesh": os.path.basename(mesh)[:-4], "material": material, "dt": dt, "preconditioner": pc}
     if not os.path.exists(report):
         print(log[-2000:])
         return dict(row, newton_per_step="failed"), cmd
@@ -72,6 +75,9 @@ def main():
         if not os.path.exists(mesh):
             subprocess.run([os.path.join(top, "scripts", "make-meshes"), "tube1", "seed"], check=True)
         cases = [(mesh, "neohooke", "5e-4", str(5e-4 * steps), pc, 64) for pc in ("GDSW", "OS1", "PCASM", "GAMG")]
+    elif mode == "tubes":
+        T = sys.argv[2] if len(sys.argv) > 2 else "0.001"
+        cases = [(os.path.join(top, "meshes", f"{t}_L0.msh"), m, "5e-4", T, pc, 8) for t in ("tube2", "tube3") for m in MATERIALS for pc in ("GDSW", "OS1", "PCASM")]
     else:
         sys.exit(__doc__)
     for case in cases:
