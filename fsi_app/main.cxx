@@ -85,6 +85,32 @@ static PetscErrorCode CreateSolver(const Scene &sc, DM dm, PetscInt field, SNES 
   PetscFunctionReturn(0);
 }
 
+/* Global unknowns per field, under the names of the monolithic system's blocks (a block a
+   scene does not solve has none). */
+static PetscErrorCode CountUnknowns(DM dm, RunReport &report)
+{
+  const std::vector<std::pair<std::string, std::string>> block = {{"displacement", "structure"}, {"velocity", "fluid"}, {"pressure", "pressure"}, {"geometry", "geometry"}, {"multiplier", "multiplier"}};
+  IS                                                    *is;
+  char                                                 **names;
+  PetscInt                                               nf;
+
+  PetscFunctionBegin;
+  PetscCall(DMCreateFieldIS(dm, &nf, &names, &is));
+  for (const auto &b : block) {
+    PetscInt n = 0;
+    for (PetscInt f = 0; f < nf; f++)
+      if (b.first == names[f]) PetscCall(ISGetSize(is[f], &n));
+    report.unknowns.push_back({b.second, n});
+  }
+  for (PetscInt f = 0; f < nf; f++) {
+    PetscCall(ISDestroy(&is[f]));
+    PetscCall(PetscFree(names[f]));
+  }
+  PetscCall(PetscFree(is));
+  PetscCall(PetscFree(names));
+  PetscFunctionReturn(0);
+}
+
 /* Errors against the exact solution of the verification scenes, printed and reported. */
 static PetscErrorCode Verify(const Scene &sc, DM dm, const StructureBlock &sb, const FluidBlock &fb, const GeometryBlock &gb, Vec d, RunReport &report)
 {
@@ -120,7 +146,7 @@ int main(int argc, char **argv)
   DM             dm;
   SNES           snes;
   Vec            d;
-  PetscInt       field, N, first = 0;
+  PetscInt       field, first = 0;
   RunReport      report;
   XdmfSeries     series;
 
@@ -129,25 +155,13 @@ int main(int argc, char **argv)
   PetscCall(PhasesBegin());
   PetscCall(ReadScene(sc));
   PetscCall(CreateMesh(sc, &dm));
-  PetscInt pressureField = -1;
+  PetscInt pressureField;
   if (sc.physics == PHYSICS_STRUCTURE) PetscCall(SetUpStructure(sc, dm, sb, &field));
   else if (sc.physics == PHYSICS_GEOMETRY) PetscCall(SetUpGeometry(sc, dm, gb, &field));
   else PetscCall(SetUpFluid(sc, dm, fb, &field, &pressureField));
   PetscCall(DMCreateGlobalVector(dm, &d));
   PetscCall(PetscObjectSetName((PetscObject)d, "solution"));
-  PetscCall(VecGetSize(d, &N));
-  if (sc.physics == PHYSICS_STRUCTURE) report.unknowns = {{"structure", N}, {"fluid", 0}, {"pressure", 0}, {"geometry", 0}, {"multiplier", 0}};
-  else if (sc.physics == PHYSICS_GEOMETRY) report.unknowns = {{"structure", 0}, {"fluid", 0}, {"pressure", 0}, {"geometry", N}, {"multiplier", 0}};
-  else {
-    IS      *is;
-    PetscInt nf, nu, np;
-    PetscCall(DMCreateFieldIS(dm, &nf, nullptr, &is));
-    PetscCall(ISGetSize(is[field], &nu));
-    PetscCall(ISGetSize(is[pressureField], &np));
-    for (PetscInt f = 0; f < nf; f++) PetscCall(ISDestroy(&is[f]));
-    PetscCall(PetscFree(is));
-    report.unknowns = {{"structure", 0}, {"fluid", nu}, {"pressure", np}, {"geometry", 0}, {"multiplier", 0}};
-  }
+  PetscCall(CountUnknowns(dm, report));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "unknowns:"));
   for (const auto &u : report.unknowns) PetscCall(PetscPrintf(PETSC_COMM_WORLD, " %s %" PetscInt_FMT, u.first.c_str(), u.second));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "\n"));
@@ -168,9 +182,8 @@ int main(int argc, char **argv)
   if (sc.output[0]) {
     std::vector<PetscReal> times; /* frames a run restarted at step `first` has written */
     for (PetscInt k = 0; sc.restart[0] && k <= first; k += sc.outputEvery) times.push_back(k * step);
-    if (sc.physics == PHYSICS_STRUCTURE) PetscCall(XdmfOpen(sc.output, dm, sb.cells, "displacement", times, series));
-    else if (sc.physics == PHYSICS_GEOMETRY) PetscCall(XdmfOpen(sc.output, dm, gb.cells, "displacement", times, series));
-    else PetscCall(XdmfOpen(sc.output, dm, fb.velocity, "velocity", times, series));
+    const FieldCells &shown = sc.physics == PHYSICS_FLUID ? fb.velocity : sc.physics == PHYSICS_GEOMETRY ? gb.cells : sb.cells;
+    PetscCall(XdmfOpen(sc.output, dm, shown, sc.physics == PHYSICS_FLUID ? "velocity" : "displacement", times, series));
     if (!sc.restart[0]) PetscCall(XdmfWriteFrame(series, 0, d));
   }
 
