@@ -155,7 +155,7 @@ int main(int argc, char **argv)
   PetscCall(PhasesBegin());
   PetscCall(ReadScene(sc));
   PetscCall(CreateMesh(sc, &dm));
-  PetscInt pressureField;
+  PetscInt pressureField = -1;
   if (sc.physics == PHYSICS_STRUCTURE) PetscCall(SetUpStructure(sc, dm, sb, &field));
   else if (sc.physics == PHYSICS_GEOMETRY) PetscCall(SetUpGeometry(sc, dm, gb, &field));
   else PetscCall(SetUpFluid(sc, dm, fb, &field, &pressureField));
@@ -182,8 +182,8 @@ int main(int argc, char **argv)
   if (sc.output[0]) {
     std::vector<PetscReal> times; /* frames a run restarted at step `first` has written */
     for (PetscInt k = 0; sc.restart[0] && k <= first; k += sc.outputEvery) times.push_back(k * step);
-    const FieldCells &shown = sc.physics == PHYSICS_FLUID ? fb.velocity : sc.physics == PHYSICS_GEOMETRY ? gb.cells : sb.cells;
-    PetscCall(XdmfOpen(sc.output, dm, shown, sc.physics == PHYSICS_FLUID ? "velocity" : "displacement", times, series));
+    if (sc.physics == PHYSICS_FLUID) PetscCall(XdmfOpen(sc.output, dm, fb.velocity, {{"velocity", field}, {"pressure", pressureField}}, times, series));
+    else PetscCall(XdmfOpen(sc.output, dm, sc.physics == PHYSICS_GEOMETRY ? gb.cells : sb.cells, {{"displacement", field}}, times, series));
     if (!sc.restart[0]) PetscCall(XdmfWriteFrame(series, 0, d));
   }
 

@@ -374,12 +374,19 @@ def fluid_poiseuille():
 def fluid_pulse():
     """The seed's inflow pulse (1330 dyn/cm^2 for t <= 3 ms) in the rigid tube #1, backward
     Euler dt 0.5 ms, 2 ranks: Newton converges in every step within 3 iterations, FGMRES with
-    the fieldsplit preconditioner needs at most 20 iterations per Newton step."""
+    the fieldsplit preconditioner needs at most 20 iterations per Newton step; the XDMF output
+    has velocity and pressure in every frame."""
+    tmp = tempfile.mkdtemp()
     out = run([APP, "-options_file", os.path.join(MESHES, "..", "scenes", "fluid_tube1_pulse.opts"), "-mesh", os.path.join(MESHES, "tube1_L0.msh"),
-               "-t_final", 2e-3], 2)
+               "-t_final", 2e-3, "-output", os.path.join(tmp, "flow.xdmf")], 2)
     steps = [(int(a), int(b)) for a, b in re.findall(r"step \d+/4 t \S+ newton (\d+) krylov (\d+) CONVERGED", out)]
     print(steps)
     assert len(steps) == 4 and all(n <= 3 and k <= 20 * n for n, k in steps), steps
+    # the output holds velocity (P2) and pressure (P1, linear on the edges) at the 1894 P2 nodes, 5 frames
+    listing = subprocess_out(["h5ls", "-r", os.path.join(tmp, "flow.h5")])
+    assert len(re.findall(r"/fields/velocity_\d+ +Dataset \{1894, 3\}", listing)) == 5, listing
+    assert len(re.findall(r"/fields/pressure_\d+ +Dataset \{1894\}", listing)) == 5, listing
+    shutil.rmtree(tmp)
 
 
 

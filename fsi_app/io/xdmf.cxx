@@ -30,12 +30,14 @@ static PetscErrorCode WriteXdmf(const XdmfSeries &s)
   const std::string tmp = s.xdmf + ".tmp";
   fp                    = std::fopen(tmp.c_str(), "w");
   PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot write the file", s.xdmf.c_str());
-  std::fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Temporal\">\n", s.name.c_str());
+  std::fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Temporal\">\n", s.fields[0].name.c_str());
   for (size_t k = 0; k < s.times.size(); k++) {
     std::fprintf(fp, "   <Grid Name=\"frame %zu\" GridType=\"Uniform\">\n    <Time Value=\"%.10g\"/>\n", k, (double)s.times[k]);
     std::fprintf(fp, "    <Topology TopologyType=\"Tetrahedron_10\" NumberOfElements=\"%" PetscInt_FMT "\">\n     <DataItem Dimensions=\"%" PetscInt_FMT " 10\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:/mesh/topology</DataItem>\n    </Topology>\n", s.nCells, s.nCells, (int)sizeof(PetscInt), h5.c_str());
     std::fprintf(fp, "    <Geometry GeometryType=\"XYZ\">\n     <DataItem Dimensions=\"%" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/mesh/coordinates</DataItem>\n    </Geometry>\n", s.nNodes, h5.c_str());
-    std::fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"Vector\" Center=\"Node\">\n     <DataItem Dimensions=\"%" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/fields/%s_%zu</DataItem>\n    </Attribute>\n   </Grid>\n", s.name.c_str(), s.nNodes, h5.c_str(), s.name.c_str(), k);
+    for (const XdmfField &f : s.fields)
+      std::fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n     <DataItem Dimensions=\"%" PetscInt_FMT "%s\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/fields/%s_%zu</DataItem>\n    </Attribute>\n", f.name.c_str(), f.nc == 1 ? "Scalar" : "Vector", s.nNodes, f.nc == 1 ? "" : " 3", h5.c_str(), f.name.c_str(), k);
+    std::fprintf(fp, "   </Grid>\n");
   }
   std::fprintf(fp, "  </Grid>\n </Domain>\n</Xdmf>\n");
   std::fclose(fp);
@@ -72,10 +74,12 @@ static PetscErrorCode NumberNodes(XdmfSeries &s)
   std::vector<PetscInt> sent(s.node);
   PetscCall(PetscSFBcastBegin(sf, MPIU_INT, sent.data(), s.node.data(), MPI_REPLACE));
   PetscCall(PetscSFBcastEnd(sf, MPIU_INT, sent.data(), s.node.data(), MPI_REPLACE));
-  PetscCall(VecCreateMPI(comm, 3 * owned, PETSC_DETERMINE, &s.values));
-  PetscCall(VecSetBlockSize(s.values, 3));
-  PetscCall(VecGetSize(s.values, &s.nNodes));
-  s.nNodes /= 3;
+  for (XdmfField &f : s.fields) {
+    PetscCall(PetscSectionGetFieldComponents(local, f.field, &f.nc));
+    PetscCall(VecCreateMPI(comm, f.nc * owned, PETSC_DETERMINE, &f.values));
+    PetscCall(VecSetBlockSize(f.values, f.nc));
+  }
+  PetscCallMPI(MPIU_Allreduce(&owned, &s.nNodes, 1, MPIU_INT, MPI_SUM, comm));
   PetscFunctionReturn(0);
 }
 
@@ -87,7 +91,10 @@ static PetscErrorCode MeshData(XdmfSeries &s, Vec *coordinates, IS *topology)
   PetscInt rStart;
 
   PetscFunctionBegin;
-  PetscCall(VecDuplicate(s.values, &coords));
+  PetscInt owned;
+  PetscCall(VecGetLocalSize(s.fields[0].values, &owned));
+  PetscCall(VecCreateMPI(comm, 3 * (owned / s.fields[0].nc), PETSC_DETERMINE, &coords)); /* the nodes' ownership */
+  PetscCall(VecSetBlockSize(coords, 3));
   PetscCall(PetscObjectSetName((PetscObject)coords, "coordinates"));
   PetscCall(VecGetOwnershipRange(coords, &rStart, nullptr));
   PetscScalar *xa;
@@ -115,7 +122,7 @@ static PetscErrorCode MeshData(XdmfSeries &s, Vec *coordinates, IS *topology)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode XdmfOpen(const char *file, DM dm, const FieldCells &cells, const char *name, const std::vector<PetscReal> &times, XdmfSeries &s)
+PetscErrorCode XdmfOpen(const char *file, DM dm, const FieldCells &cells, const std::vector<std::pair<std::string, PetscInt>> &fields, const std::vector<PetscReal> &times, XdmfSeries &s)
 {
   PetscViewer viewer;
   Vec         coords;
@@ -124,7 +131,8 @@ PetscErrorCode XdmfOpen(const char *file, DM dm, const FieldCells &cells, const 
 
   PetscFunctionBegin;
   PetscCheck(f.size() > 5 && f.substr(f.size() - 5) == ".xdmf", PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_WRONG, "-output %s: name the file <name>.xdmf (the data go to <name>.h5)", file);
-  s.xdmf = f, s.h5 = f.substr(0, f.size() - 5) + ".h5", s.name = name, s.dm = dm, s.cells = &cells, s.times = times;
+  s.xdmf = f, s.h5 = f.substr(0, f.size() - 5) + ".h5", s.dm = dm, s.cells = &cells, s.times = times;
+  for (const auto &fl : fields) s.fields.push_back({fl.first, fl.second});
   PetscCall(NumberNodes(s));
   PetscCall(MeshData(s, &coords, &topology));
   if (times.empty()) { /* a restart finds the mesh in the file */
@@ -140,13 +148,34 @@ PetscErrorCode XdmfOpen(const char *file, DM dm, const FieldCells &cells, const 
   PetscFunctionReturn(0);
 }
 
+/* The values of field f at node point p: its own dofs, or for a P1 field at an edge midpoint
+   the mean of the edge's vertices (the linear interpolant there). */
+static PetscErrorCode NodeValues(const XdmfSeries &s, PetscSection local, const XdmfField &f, const PetscScalar *xa, PetscInt p, PetscScalar *v)
+{
+  PetscInt dof, off;
+
+  PetscFunctionBegin;
+  PetscCall(PetscSectionGetFieldDof(local, p, f.field, &dof));
+  if (dof) {
+    PetscCall(PetscSectionGetFieldOffset(local, p, f.field, &off));
+    for (PetscInt c = 0; c < f.nc; c++) v[c] = xa[off + c];
+    PetscFunctionReturn(0);
+  }
+  const PetscInt *cone;
+  PetscCall(DMPlexGetCone(s.dm, p, &cone));
+  for (PetscInt c = 0; c < f.nc; c++) v[c] = 0;
+  for (int e = 0; e < 2; e++) {
+    PetscCall(PetscSectionGetFieldOffset(local, cone[e], f.field, &off));
+    for (PetscInt c = 0; c < f.nc; c++) v[c] += xa[off + c] / 2;
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode XdmfWriteFrame(XdmfSeries &s, PetscReal t, Vec x)
 {
   PetscViewer        viewer;
   PetscSection       local;
   Vec                xl;
-  PetscInt           rStart;
-  PetscScalar       *va;
   const PetscScalar *xa;
   char               dataset[256];
 
@@ -155,28 +184,24 @@ PetscErrorCode XdmfWriteFrame(XdmfSeries &s, PetscReal t, Vec x)
   PetscCall(DMGetLocalVector(s.dm, &xl));
   PetscCall(DMGlobalToLocal(s.dm, x, INSERT_VALUES, xl));
   PetscCall(InsertEssentialValues(s.dm, t, xl));
-  PetscCall(VecGetOwnershipRange(s.values, &rStart, nullptr));
-  PetscCall(VecGetArray(s.values, &va));
   PetscCall(VecGetArrayRead(xl, &xa));
-  PetscCall(ForEachNode(s, [&](PetscInt p, PetscInt node, PetscBool own) -> PetscErrorCode {
-    PetscInt off;
-    PetscFunctionBegin;
-    if (own) {
-      PetscCall(PetscSectionGetFieldOffset(local, p, s.cells->field, &off));
-      for (int d = 0; d < 3; d++) va[3 * node - rStart + d] = xa[off + d];
-    }
-    PetscFunctionReturn(0);
-  }));
-  PetscCall(VecRestoreArrayRead(xl, &xa));
-  PetscCall(VecRestoreArray(s.values, &va));
-  PetscCall(DMRestoreLocalVector(s.dm, &xl));
-  PetscCall(PetscSNPrintf(dataset, sizeof(dataset), "%s_%zu", s.name.c_str(), s.times.size()));
-  PetscCall(PetscObjectSetName((PetscObject)s.values, dataset));
   PetscCall(PetscViewerHDF5Open(PetscObjectComm((PetscObject)s.dm), s.h5.c_str(), FILE_MODE_APPEND, &viewer));
   PetscCall(PetscViewerHDF5PushGroup(viewer, "/fields"));
-  PetscCall(VecView(s.values, viewer));
+  for (XdmfField &f : s.fields) {
+    PetscInt     rStart;
+    PetscScalar *va;
+    PetscCall(VecGetOwnershipRange(f.values, &rStart, nullptr));
+    PetscCall(VecGetArray(f.values, &va));
+    PetscCall(ForEachNode(s, [&](PetscInt p, PetscInt node, PetscBool own) { return own ? NodeValues(s, local, f, xa, p, &va[f.nc * node - rStart]) : 0; }));
+    PetscCall(VecRestoreArray(f.values, &va));
+    PetscCall(PetscSNPrintf(dataset, sizeof(dataset), "%s_%zu", f.name.c_str(), s.times.size()));
+    PetscCall(PetscObjectSetName((PetscObject)f.values, dataset));
+    PetscCall(VecView(f.values, viewer));
+  }
   PetscCall(PetscViewerHDF5PopGroup(viewer));
   PetscCall(PetscViewerDestroy(&viewer));
+  PetscCall(VecRestoreArrayRead(xl, &xa));
+  PetscCall(DMRestoreLocalVector(s.dm, &xl));
   s.times.push_back(t);
   PetscCall(WriteXdmf(s));
   PetscFunctionReturn(0);
@@ -185,7 +210,7 @@ PetscErrorCode XdmfWriteFrame(XdmfSeries &s, PetscReal t, Vec x)
 PetscErrorCode XdmfClose(XdmfSeries &s)
 {
   PetscFunctionBegin;
-  PetscCall(VecDestroy(&s.values));
+  for (XdmfField &f : s.fields) PetscCall(VecDestroy(&f.values));
   PetscFunctionReturn(0);
 }
 
