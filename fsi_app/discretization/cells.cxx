@@ -22,8 +22,8 @@ PetscErrorCode FieldCellsCreate(DM dm, DMLabel region, PetscInt field, FieldCell
     if (region) PetscCall(DMLabelGetValue(region, c, &v));
     if (v != 1) continue;
     CellGeometry g;
-    PetscInt     off[10], pt[10], n, *idx, ncl, *closure = nullptr;
-    PetscCall(CellP2(dm, local, c, g, off, nullptr, pt));
+    PetscInt     pt[10], n, *idx, ncl, *closure = nullptr;
+    PetscCall(CellP2(dm, c, g, pt));
     /* closure indices are field-major: field f's block starts after the other fields' dofs of
        the whole closure; within it, each point's dofs of f in closure order */
     std::vector<PetscInt> start(nf + 1, 0);

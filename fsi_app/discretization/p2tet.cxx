@@ -64,10 +64,10 @@ PetscErrorCode CreateFaceRule(PetscInt degree, FaceRule &rule)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CellP2(DM dm, PetscSection section, PetscInt cell, CellGeometry &g, PetscInt nodeOffset[10], PetscInt *closureSize, PetscInt nodePoint[10])
+PetscErrorCode CellP2(DM dm, PetscInt cell, CellGeometry &g, PetscInt nodePoint[10])
 {
-  PetscInt    *closure = nullptr, nclosure, vStart, vEnd, eStart, eEnd, nv = 0, off = 0;
-  PetscInt     vertex[4], edge[6], edgeOffset[6], edgeCone[6][2], ne = 0;
+  PetscInt    *closure = nullptr, nclosure, vStart, vEnd, eStart, eEnd, nv = 0;
+  PetscInt     vertex[4], edge[6], edgeCone[6][2], ne = 0;
   Vec          coords;
   PetscSection csec;
   DM           cdm;
@@ -83,37 +83,26 @@ PetscErrorCode CellP2(DM dm, PetscSection section, PetscInt cell, CellGeometry &
   PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &nclosure, &closure));
   for (PetscInt k = 0; k < nclosure; k++) {
     const PetscInt p = closure[2 * k];
-    PetscInt       dof;
-    PetscCall(PetscSectionGetDof(section, p, &dof));
     if (p >= vStart && p < vEnd) {
       PetscInt coff;
       PetscCall(PetscSectionGetOffset(csec, p, &coff));
       for (int d = 0; d < 3; d++) g.x[nv][d] = PetscRealPart(xa[coff + d]);
-      vertex[nv]       = p;
-      nodeOffset[nv++] = off;
+      vertex[nv++] = p;
     } else if (p >= eStart && p < eEnd) {
       const PetscInt *cone;
       PetscCall(DMPlexGetCone(dm, p, &cone));
-      edgeCone[ne][0] = cone[0], edgeCone[ne][1] = cone[1], edge[ne] = p;
-      edgeOffset[ne++] = off;
+      edgeCone[ne][0] = cone[0], edgeCone[ne][1] = cone[1], edge[ne++] = p;
     }
-    off += dof;
   }
   PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &nclosure, &closure));
   PetscCall(VecRestoreArrayRead(coords, &xa));
-  if (closureSize) *closureSize = off;
   PetscCheck(nv == 4 && ne == 6, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "cell %" PetscInt_FMT " is not a tetrahedron (%" PetscInt_FMT " vertices, %" PetscInt_FMT " edges)", cell, nv, ne);
   for (int e = 0; e < 6; e++) { /* our edge (a, b) is the closure edge whose cone is {vertex[a], vertex[b]} */
     const PetscInt a = vertex[EdgeVertex[e][0]], b = vertex[EdgeVertex[e][1]];
-    nodeOffset[4 + e] = -1;
     for (int f = 0; f < 6; f++)
-      if ((edgeCone[f][0] == a && edgeCone[f][1] == b) || (edgeCone[f][0] == b && edgeCone[f][1] == a)) {
-        nodeOffset[4 + e] = edgeOffset[f];
-        if (nodePoint) nodePoint[4 + e] = edge[f];
-      }
+      if ((edgeCone[f][0] == a && edgeCone[f][1] == b) || (edgeCone[f][0] == b && edgeCone[f][1] == a)) nodePoint[4 + e] = edge[f];
   }
-  if (nodePoint)
-    for (int k = 0; k < 4; k++) nodePoint[k] = vertex[k];
+  for (int k = 0; k < 4; k++) nodePoint[k] = vertex[k];
   /* barycentric gradients: rows of E^{-1}, E = [x1 - x0, x2 - x0, x3 - x0] */
   PetscReal E[3][3], inv[3][3];
   for (int r = 0; r < 3; r++)

@@ -43,11 +43,9 @@ struct CellGeometry {
   PetscReal detE;             /* |det E|: an integral is sum_q w_q f(x_q) detE */
 };
 
-/* Geometry of `cell`, and for each of its 10 P2 nodes the offset of the node's first dof in
-   the cell's closure array of `section` (DMPlexVecGetClosure / DMPlexGetClosureIndices order)
-   for a vector field that is the only field on these points, the closure size, and the mesh
-   point (vertex or edge) of each node (the last two may be NULL). */
-PetscErrorCode CellP2(DM dm, PetscSection section, PetscInt cell, CellGeometry &g, PetscInt nodeOffset[10], PetscInt *closureSize, PetscInt nodePoint[10]);
+/* Geometry of `cell` and the mesh point (vertex or edge) of each of its 10 P2 nodes; where a
+   field's dofs sit is discretization/cells.h's business. */
+PetscErrorCode CellP2(DM dm, PetscInt cell, CellGeometry &g, PetscInt nodePoint[10]);
 
 /* Physical basis gradients at one point: dN[a][d]. */
 void P2Gradients(const CellGeometry &g, const PetscReal lambda[4], PetscReal dN[10][3]);
