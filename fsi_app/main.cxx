@@ -1,6 +1,7 @@
 static const char help[] = "fsi_app: monolithic fluid-structure interaction on PETSc. So far: the structure block\n"
                            "(linear elastic, Neo-Hooke and arterial walls; statics and dynamics), the fluid block\n"
-                           "(Navier-Stokes, P2-P1, fixed mesh) and their verification.\n"
+                           "(Navier-Stokes, P2-P1, ALE on a moving mesh), the geometry block (harmonic mesh motion)\n"
+                           "and their verification.\n"
                            "Scenes are options files: -options_file scenes/X.opts\n";
 
 #include "io/checkpoint.h"
@@ -8,35 +9,36 @@ static const char help[] = "fsi_app: monolithic fluid-structure interaction on P
 #include "io/xdmf.h"
 #include "mesh/mesh.h"
 #include "scene.h"
+#include "blocks.h"
 #include "solver/subdomains.h"
 #include "solver/time_loop.h"
-#include "fluid/setup.h"
-#include "geometry/harmonic.h"
-#include "structure/setup.h"
 #include "verification/errors.h"
 #include "verification/mms.h"
 #include <petscgdsw.h>
 
 using namespace fsi;
 
-/* The mesh, refined; a label "boundary" on its boundary faces for the manufactured solution. */
+/* The mesh, refined; a label "boundary" on its boundary faces (the manufactured solutions'). */
 static PetscErrorCode CreateMesh(const Scene &sc, DM *dm)
 {
-  std::vector<std::string> required;
+  std::vector<std::string> groups; /* the groups the scene names */
+  auto                     add = [&](const char *list) {
+    for (const auto &g : SplitList(list)) groups.push_back(g.substr(0, g.find(':')));
+  };
   if (sc.physics == PHYSICS_STRUCTURE) {
-    for (const auto &g : SplitList(sc.clamp)) required.push_back(g.substr(0, g.find(':')));
-    if (sc.region[0]) required.push_back(sc.region);
-    if (sc.pressure != 0) required.push_back(sc.loaded);
-    if (sc.tractionGroup[0]) required.push_back(sc.tractionGroup);
-  } else if (sc.physics == PHYSICS_GEOMETRY) {
-    for (const auto &g : SplitList(sc.slip)) required.push_back(g.substr(0, g.find(':')));
-    required.push_back(sc.fluidRegion), required.push_back(sc.interface);
+    add(sc.clamp), add(sc.region);
+    if (sc.pressure != 0) add(sc.loaded);
+    add(sc.tractionGroup);
   } else {
-    for (const auto &g : SplitList(sc.noslip)) required.push_back(g.substr(0, g.find(':')));
-    required.push_back(sc.fluidRegion);
-    if (sc.inletPressure != 0 || sc.poiseuille[0] > 0) required.push_back(sc.inlet);
-    if (sc.poiseuille[0] > 0) required.push_back(sc.outlet);
+    add(sc.fluidRegion);
+    if (sc.physics == PHYSICS_FLUID) add(sc.noslip);
+    if (sc.physics == PHYSICS_FLUID && (sc.inletPressure != 0 || sc.poiseuille[0] > 0)) add(sc.inlet);
+    if (sc.physics == PHYSICS_FLUID && (sc.poiseuille[0] > 0 || sc.mms)) add(sc.outlet);
+    if (sc.physics == PHYSICS_GEOMETRY || sc.movingMesh) add(sc.slip), add(sc.interface);
   }
+  std::vector<std::string> required;
+  for (const auto &g : groups)
+    if (!g.empty() && g != "boundary") required.push_back(g); /* "boundary" is made below */
 
   PetscFunctionBegin;
   PetscCall(LoadMesh(PETSC_COMM_WORLD, sc.mesh, required, dm));
@@ -111,42 +113,72 @@ static PetscErrorCode CountUnknowns(DM dm, RunReport &report)
   PetscFunctionReturn(0);
 }
 
-/* Errors against the exact solution of the verification scenes, printed and reported. */
-static PetscErrorCode Verify(const Scene &sc, DM dm, const StructureBlock &sb, const FluidBlock &fb, const GeometryBlock &gb, Vec d, RunReport &report)
+static PetscErrorCode PrintErrors(const char *what, const Errors &e, RunReport &report)
 {
-  Errors     e;
-  Lame       lame = LameCylinder(sc.E, sc.nu, sc.pressure, sc.lameRadii[0], sc.lameRadii[1]);
-  Poiseuille flow = {sc.poiseuille[0], sc.poiseuille[1], sc.poiseuille[2], sc.muFluid};
+  const std::string w = what[0] ? std::string(what) + "_" : "";
+  PetscFunctionBegin;
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s%sL2 error %.6e relative %.6e\n%s%sH1 error %.6e relative %.6e\n", what, what[0] ? " " : "", (double)e.l2, (double)(e.l2 / e.l2Exact), what, what[0] ? " " : "", (double)e.h1, (double)(e.h1 / e.h1Exact)));
+  report.results.insert(report.results.end(), {{w + "l2_error", e.l2}, {w + "l2_relative", e.l2 / e.l2Exact}, {w + "h1_error", e.h1}, {w + "h1_relative", e.h1 / e.h1Exact}});
+  PetscFunctionReturn(0);
+}
+
+/* Errors against the exact solution of the verification scenes at time t, printed and reported. */
+static PetscErrorCode Verify(const Scene &sc, DM dm, const Blocks &b, Vec d, PetscReal t, RunReport &report)
+{
+  Errors            e;
+  const FluidBlock &fb   = b.fluid;
+  Lame              lame = LameCylinder(sc.E, sc.nu, sc.pressure, sc.lameRadii[0], sc.lameRadii[1]);
+  Poiseuille        flow = {sc.poiseuille[0], sc.poiseuille[1], sc.poiseuille[2], sc.muFluid};
 
   PetscFunctionBegin;
-  if (sc.physics == PHYSICS_GEOMETRY) PetscCall(ComputeErrors(dm, gb.cells, d, 0, HarmonicQuadraticSolution, &sc.geometryAmplitude, e));
-  else if (sc.physics == PHYSICS_FLUID && flow.R > 0) {
+  if (sc.physics == PHYSICS_GEOMETRY) PetscCall(ComputeErrors(dm, b.geometry.cells, d, t, PrescribedDisplacementSolution, &b.motion, e));
+  else if (sc.physics == PHYSICS_FLUID && sc.mms) {
+    PetscCall(ComputeErrors(dm, fb.pressure, d, t, FlowMMSPressure, &b.flow, e, fb.mesh));
+    PetscCall(PrintErrors("pressure", e, report));
+    PetscCall(ComputeErrors(dm, fb.velocity, d, t, FlowMMSVelocity, &b.flow, e, fb.mesh));
+  } else if (sc.physics == PHYSICS_FLUID && flow.R > 0) {
     const PetscReal exact = PETSC_PI * PetscPowReal(flow.R, 4) * flow.dp / (8 * flow.mu * flow.L);
     PetscReal       Q;
     PetscCall(FluidFlux(dm, fb, fb.tractions[1].faces, d, &Q));
-    PetscCall(ComputeErrors(dm, fb.velocity, d, 0, PoiseuilleVelocity, &flow, e));
+    PetscCall(ComputeErrors(dm, fb.velocity, d, t, PoiseuilleVelocity, &flow, e, fb.mesh));
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "flux %.6e exact %.6e relative error %.3e\n", (double)Q, (double)exact, (double)PetscAbsReal(Q / exact - 1)));
     report.results.insert(report.results.end(), {{"flux", Q}, {"flux_relative_error", PetscAbsReal(Q / exact - 1)}});
   } else if (sc.physics == PHYSICS_FLUID) PetscFunctionReturn(0);
-  else if (sc.lameRadii[1] > 0) PetscCall(ComputeErrors(dm, sb.cells, d, 0, LameSolution, &lame, e));
-  else if (sc.mms) PetscCall(ComputeErrors(dm, sb.cells, d, 0, MMSElasticitySolution, &sc.mmsAmplitude, e));
+  else if (sc.lameRadii[1] > 0) PetscCall(ComputeErrors(dm, b.structure.cells, d, t, LameSolution, &lame, e));
+  else if (sc.mms) PetscCall(ComputeErrors(dm, b.structure.cells, d, t, MMSElasticitySolution, &sc.mmsAmplitude, e));
   else PetscFunctionReturn(0);
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "L2 error %.6e relative %.6e\nH1 error %.6e relative %.6e\n", (double)e.l2, (double)(e.l2 / e.l2Exact), (double)e.h1, (double)(e.h1 / e.h1Exact)));
-  report.results.insert(report.results.end(), {{"l2_error", e.l2}, {"l2_relative", e.l2 / e.l2Exact}, {"h1_error", e.h1}, {"h1_relative", e.h1 / e.h1Exact}});
+  PetscCall(PrintErrors("", e, report));
+  PetscFunctionReturn(0);
+}
+
+/* A dynamic manufactured flow starts from its exact velocity at t = 0, held since t = -infinity
+   (the uniform flow: nonzero; the ramped one: zero). */
+static PetscErrorCode SetInitialFlow(const Blocks &b, DM dm, Vec x, TimeHistory &h)
+{
+  Vec          local;
+  PetscScalar *a;
+
+  PetscFunctionBegin;
+  PetscCall(DMGetLocalVector(dm, &local));
+  PetscCall(VecSet(local, 0.0));
+  PetscCall(VecGetArray(local, &a));
+  SetNodalValues(b.fluid.velocity, [&](const PetscReal X[3], PetscScalar *u) { FlowMMSVelocityBC(3, 0.0, X, 3, u, (void *)&b.flow); }, a);
+  PetscCall(VecRestoreArray(local, &a));
+  PetscCall(DMLocalToGlobal(dm, local, INSERT_VALUES, x));
+  PetscCall(DMRestoreLocalVector(dm, &local));
+  PetscCall(TimeHistorySetState(h, x));
   PetscFunctionReturn(0);
 }
 
 int main(int argc, char **argv)
 {
   Scene          sc;
-  StructureBlock sb;
-  FluidBlock     fb;
-  GeometryBlock  gb;
+  Blocks         b;
   TimeHistory    history;
   DM             dm;
   SNES           snes;
   Vec            d;
-  PetscInt       field, first = 0;
+  PetscInt       first = 0;
   RunReport      report;
   XdmfSeries     series;
 
@@ -155,10 +187,9 @@ int main(int argc, char **argv)
   PetscCall(PhasesBegin());
   PetscCall(ReadScene(sc));
   PetscCall(CreateMesh(sc, &dm));
-  PetscInt pressureField = -1;
-  if (sc.physics == PHYSICS_STRUCTURE) PetscCall(SetUpStructure(sc, dm, sb, &field));
-  else if (sc.physics == PHYSICS_GEOMETRY) PetscCall(SetUpGeometry(sc, dm, gb, &field));
-  else PetscCall(SetUpFluid(sc, dm, fb, &field, &pressureField));
+  PetscCall(CreateBlocks(sc, dm, b));
+  const Fields  &fields = b.fields;
+  const PetscInt field  = sc.physics == PHYSICS_STRUCTURE ? fields.displacement : sc.physics == PHYSICS_FLUID ? fields.velocity : fields.geometry; /* reported, written */
   PetscCall(DMCreateGlobalVector(dm, &d));
   PetscCall(PetscObjectSetName((PetscObject)d, "solution"));
   PetscCall(CountUnknowns(dm, report));
@@ -166,13 +197,14 @@ int main(int argc, char **argv)
   for (const auto &u : report.unknowns) PetscCall(PetscPrintf(PETSC_COMM_WORLD, " %s %" PetscInt_FMT, u.first.c_str(), u.second));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "\n"));
   PetscCall(CreateSolver(sc, dm, field, &snes));
-  sb.snes = snes;
+  b.structure.snes = b.fluid.snes = snes;
 
   const PetscBool dynamic = sc.Dynamic();
   const PetscReal step    = dynamic ? sc.dt : 1.0 / sc.loadSteps;
   PetscCall(TimeHistoryCreate(dm, sc.scheme, step, dynamic, history));
-  sb.history = fb.history = &history;
+  b.structure.history = b.fluid.history = &history;
   PetscCall(VecSet(d, 0.0));
+  if (sc.physics == PHYSICS_FLUID && sc.mms && dynamic) PetscCall(SetInitialFlow(b, dm, d, history));
   if (sc.restart[0]) {
     CheckpointHeader c;
     PetscCall(CheckpointRead(sc.restart, dm, c, d, history));
@@ -182,15 +214,18 @@ int main(int argc, char **argv)
   if (sc.output[0]) {
     std::vector<PetscReal> times; /* frames a run restarted at step `first` has written */
     for (PetscInt k = 0; sc.restart[0] && k <= first; k += sc.outputEvery) times.push_back(k * step);
-    if (sc.physics == PHYSICS_FLUID) PetscCall(XdmfOpen(sc.output, dm, fb.velocity, {{"velocity", field}, {"pressure", pressureField}}, times, series));
-    else PetscCall(XdmfOpen(sc.output, dm, sc.physics == PHYSICS_GEOMETRY ? gb.cells : sb.cells, {{"displacement", field}}, times, series));
+    if (sc.physics == PHYSICS_FLUID) {
+      std::vector<std::pair<std::string, PetscInt>> written = {{"velocity", fields.velocity}, {"pressure", fields.pressure}};
+      if (fields.geometry >= 0) written.push_back({"mesh_displacement", fields.geometry}); /* ParaView: Warp By Vector shows the moved mesh */
+      PetscCall(XdmfOpen(sc.output, dm, b.fluid.velocity, written, times, series));
+    } else PetscCall(XdmfOpen(sc.output, dm, sc.physics == PHYSICS_GEOMETRY ? b.geometry.cells : b.structure.cells, {{"displacement", field}}, times, series));
     if (!sc.restart[0]) PetscCall(XdmfWriteFrame(series, 0, d));
   }
 
   TimeLoop loop;
   loop.snes = snes, loop.history = &history, loop.steps = sc.Steps(), loop.maxCuts = sc.maxCuts, loop.dynamic = dynamic;
   loop.setTime   = [&](PetscReal t) {
-    sb.load = StructureLoadFactor(sc, t), sb.pressure = sc.pressure * sb.load, fb.time = t;
+    b.structure.load = StructureLoadFactor(sc, t), b.structure.pressure = sc.pressure * b.structure.load, b.fluid.time = b.system.time = t;
     return PetscErrorCode(0);
   };
   loop.afterStep = [&](PetscInt k, PetscReal t, Vec x) -> PetscErrorCode {
@@ -225,7 +260,8 @@ int main(int argc, char **argv)
   char cure[160]; /* what to change: the load increments (statics) or the time step */
   if (dynamic) PetscCall(PetscSNPrintf(cure, sizeof(cure), "reduce the time step (-dt %g now) or allow more halvings (-max_step_cuts %" PetscInt_FMT " now)", (double)sc.dt, sc.maxCuts));
   else PetscCall(PetscSNPrintf(cure, sizeof(cure), "apply the load in more increments (-structure_load_steps %" PetscInt_FMT " now) or allow more halvings (-max_step_cuts %" PetscInt_FMT " now)", sc.loadSteps, sc.maxCuts));
-  PetscCheck(reason != SNES_DIVERGED_FUNCTION_DOMAIN, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton stopped in step %" PetscInt_FMT ": an element inverted (det F <= 0) in every step the line search tried, also on the step halved %" PetscInt_FMT " times; %s", solved ? report.steps.back().step : 0, sc.maxCuts, cure);
+  PetscCheck(reason != SNES_DIVERGED_FUNCTION_DOMAIN, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton stopped in step %" PetscInt_FMT ": %s in every step the line search tried, also on the step halved %" PetscInt_FMT " times; %s", solved ? report.steps.back().step : 0,
+             sc.physics == PHYSICS_FLUID ? "a cell of the moved fluid mesh inverted (J <= 0: the prescribed interface displacement is too large for its harmonic extension; -geometry_amplitude)" : "an element inverted (det F <= 0)", sc.maxCuts, cure);
   if (reason == SNES_DIVERGED_LINEAR_SOLVE) {
     KSP                ksp;
     KSPConvergedReason kreason;
@@ -238,7 +274,7 @@ int main(int argc, char **argv)
   PetscCall(VecNorm(d, NORM_2, &dnorm));
   if (sc.physics != PHYSICS_FLUID) report.results.insert(report.results.end(), {{"max_displacement", dmax}, {"displacement_norm", dnorm}});
   else report.results.insert(report.results.end(), {{"max_velocity", dmax}, {"solution_norm", dnorm}});
-  PetscCall(Verify(sc, dm, sb, fb, gb, d, report));
+  PetscCall(Verify(sc, dm, b, d, dynamic ? loop.steps * step : 1.0, report));
   PetscCall(PhasesMeasure(PETSC_COMM_WORLD, t1 - t0, report.phases));
   const Phases &p = report.phases;
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "seconds: assembly %.3f preconditioner setup %.3f krylov %.3f total %.3f; peak memory %.1f MiB\n", p.assembly, p.setup, p.krylov, p.total, p.peakMiB));

@@ -4,6 +4,13 @@ namespace fsi {
 
 const char *const PhysicsNames[] = {"structure", "fluid", "geometry", "Physics", "PHYSICS_", nullptr};
 
+PetscReal SmoothRamp(PetscReal t, PetscReal T, PetscReal *rate)
+{
+  const PetscBool rising = (PetscBool)(T > 0 && t < T);
+  if (rate) *rate = rising ? PETSC_PI / (2 * T) * PetscSinReal(PETSC_PI * t / T) : 0.0;
+  return rising ? PetscSqr(PetscSinReal(PETSC_PI * t / (2 * T))) : 1.0;
+}
+
 PetscErrorCode ReadScene(Scene &sc)
 {
   PetscInt  n;
@@ -50,7 +57,9 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(PetscOptionsString("-fluid_outlet", "group of the outflow faces (stress-free)", nullptr, sc.outlet, sc.outlet, sizeof(sc.outlet), nullptr));
   PetscCall(PetscOptionsString("-geometry_interface", "group where the fluid's mesh displacement is the structure's", nullptr, sc.interface, sc.interface, sizeof(sc.interface), nullptr));
   PetscCall(PetscOptionsString("-geometry_slip", "groups where the mesh slides: the listed components are zero (planar ends: group:z)", nullptr, sc.slip, sc.slip, sizeof(sc.slip), nullptr));
-  PetscCall(PetscOptionsReal("-geometry_amplitude", "amplitude a of the prescribed interface displacement a (x^2 - y^2, -2xy, 0) (-physics geometry)", nullptr, sc.geometryAmplitude, &sc.geometryAmplitude, nullptr));
+  PetscCall(PetscOptionsReal("-geometry_amplitude", "amplitude a of the prescribed interface displacement a s(t) (x^2 - y^2, -2xy, 0) (-physics geometry, -fluid_moving_mesh)", nullptr, sc.geometryAmplitude, &sc.geometryAmplitude, nullptr));
+  PetscCall(PetscOptionsReal("-geometry_ramp", "the prescribed interface displacement rises as s(t) = sin^2(pi t / 2T) over this time T (s); 0: at once", nullptr, sc.geometryRamp, &sc.geometryRamp, nullptr));
+  PetscCall(PetscOptionsBool("-fluid_moving_mesh", "-physics fluid: the mesh moves (ALE) with the harmonic extension of the prescribed interface displacement", nullptr, sc.movingMesh, &sc.movingMesh, nullptr));
   n = 3;
   PetscCall(PetscOptionsRealArray("-poiseuille", "verification: Hagen-Poiseuille flow in a tube of radius R and length L along z driven by a pressure drop: R,L,dp", nullptr, sc.poiseuille, &n, &set));
   PetscCheck(!set || (n == 3 && sc.poiseuille[0] > 0 && sc.poiseuille[1] > 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-poiseuille: give R,L,dp with R > 0 and L > 0");
@@ -61,6 +70,8 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(PetscOptionsInt("-max_step_cuts", "a failed step (Newton diverged, element inverted) is halved up to this many times before the run stops", nullptr, sc.maxCuts, &sc.maxCuts, nullptr));
   PetscCall(PetscOptionsBool("-mms", "manufactured solution d = a sin(pi x)sin(pi y)sin(pi z)(1,1,1) on the unit cube", nullptr, sc.mms, &sc.mms, nullptr));
   PetscCall(PetscOptionsReal("-mms_amplitude", "the amplitude a of the manufactured solution", nullptr, sc.mmsAmplitude, &sc.mmsAmplitude, nullptr));
+  PetscCall(PetscOptionsEnum("-mms_flow", "-physics fluid -mms: the manufactured flow (exact velocity on the boundary but -fluid_outlet, exact traction there)", nullptr, FlowMMSKindNames, (PetscEnum)sc.mmsFlow, (PetscEnum *)&sc.mmsFlow, nullptr));
+  PetscCall(PetscOptionsReal("-mms_ramp", "the trigonometric manufactured flow rises as sin^2(pi t / 2T) over this time T (s); 0: steady", nullptr, sc.mmsRamp, &sc.mmsRamp, nullptr));
   n = 2;
   PetscCall(PetscOptionsRealArray("-lame", "verification against Lame's cylinder: inner,outer radius", nullptr, sc.lameRadii, &n, nullptr));
   PetscCall(PetscOptionsString("-output", "XDMF file of the solution over time (+ .h5 beside it); empty: none", nullptr, sc.output, sc.output, sizeof(sc.output), nullptr));
@@ -78,6 +89,8 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCheck(sc.fibreAngle >= 0 && sc.fibreAngle <= 90, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-arterial_fibre_angle %g: degrees in [0, 90]", (double)sc.fibreAngle);
   PetscCheck(sc.degree >= 1 && sc.degree <= 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_degree %" PetscInt_FMT ": use 1, 2 or 3", sc.degree);
   PetscCheck(sc.dt >= 0 && (sc.dt == 0 || sc.tFinal >= sc.dt), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-dt %g -t_final %g: need 0 <= dt <= t_final", (double)sc.dt, (double)sc.tFinal);
+  PetscCheck(sc.geometryRamp >= 0 && sc.mmsRamp >= 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-geometry_ramp %g -mms_ramp %g: must be >= 0", (double)sc.geometryRamp, (double)sc.mmsRamp);
+  PetscCheck(!sc.movingMesh || sc.physics == PHYSICS_FLUID, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_moving_mesh: only with -physics fluid (-physics %s)", PhysicsNames[sc.physics]);
   PetscCheck(sc.ramp >= 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_pressure_ramp %g: must be >= 0", (double)sc.ramp);
   PetscCheck(sc.rhoFluid > 0 && sc.muFluid > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-fluid_density %g -fluid_viscosity %g: both must be positive", (double)sc.rhoFluid, (double)sc.muFluid);
   PetscCheck(sc.rho > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_density %g: must be positive", (double)sc.rho);

@@ -4,6 +4,7 @@
 #include "discretization/fields.h"
 #include "solver/time_history.h"
 #include "structure/materials.h"
+#include "verification/mms.h"
 #include <string>
 #include <vector>
 
@@ -45,14 +46,18 @@ struct Scene {
   /* geometry (harmonic extension) */
   char      interface[64]      = "interface";
   char      slip[256]          = "inlet:z,outlet:z"; /* d . n = 0: the normal component of planar ends */
-  PetscReal geometryAmplitude  = 0.01;               /* of the interface displacement (verification field) */
+  PetscReal geometryAmplitude  = 0.01;               /* of the prescribed interface displacement */
+  PetscReal geometryRamp       = 0;                  /* it rises smoothly over this time (0: at once) */
+  PetscBool movingMesh         = PETSC_FALSE;        /* -physics fluid: the mesh moves (ALE) with the geometry block */
   /* time, or load increments in statics */
   PetscReal  dt = 0, tFinal = 0.01;
   PetscInt   loadSteps = 1, maxCuts = 4;
   TimeScheme scheme    = BACKWARD_EULER;
   /* verification */
-  PetscBool mms          = PETSC_FALSE;
-  PetscReal mmsAmplitude = 1;
+  PetscBool   mms          = PETSC_FALSE;
+  PetscReal   mmsAmplitude = 1;
+  FlowMMSKind mmsFlow      = FLOW_MMS_TRIGONOMETRIC;
+  PetscReal   mmsRamp      = 0;
   PetscReal lameRadii[2] = {0, 0};
   /* files */
   char     output[PETSC_MAX_PATH_LEN] = "", checkpoint[PETSC_MAX_PATH_LEN] = "", restart[PETSC_MAX_PATH_LEN] = "", report[PETSC_MAX_PATH_LEN] = "";
@@ -63,5 +68,8 @@ struct Scene {
 };
 
 PetscErrorCode ReadScene(Scene &sc);
+
+/* sin^2(pi t / 2T) for t < T, then 1 (T = 0: 1 at once); its rate d/dt if asked. */
+PetscReal SmoothRamp(PetscReal t, PetscReal T, PetscReal *rate = nullptr);
 
 } // namespace fsi

@@ -96,6 +96,18 @@ PetscErrorCode CellFacesCreate(DM dm, const FieldCells &cells, DMLabel label, st
   PetscFunctionReturn(0);
 }
 
+void SetNodalValues(const FieldCells &cells, const std::function<void(const PetscReal X[3], PetscScalar *v)> &value, PetscScalar *x)
+{
+  for (PetscInt k = 0; k < cells.Size(); k++) {
+    const CellGeometry &g = cells.geom[k];
+    for (PetscInt a = 0; a < cells.nodes; a++) {
+      PetscReal X[3];
+      for (int d = 0; d < 3; d++) X[d] = a < 4 ? g.x[a][d] : (g.x[EdgeVertex[a - 4][0]][d] + g.x[EdgeVertex[a - 4][1]][d]) / 2;
+      value(X, &x[cells.local[cells.nodes * k + a]]);
+    }
+  }
+}
+
 PetscErrorCode AssembleOperators(Mat J, Mat P)
 {
   PetscFunctionBegin;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "discretization/p2tet.h"
+#include <functional>
 
 namespace fsi {
 
@@ -52,6 +53,10 @@ inline void Scatter(const FieldCells &cells, PetscInt k, const PetscReal *re, Pe
   for (PetscInt a = 0; a < cells.nodes; a++)
     for (PetscInt i = 0; i < cells.nc; i++) f[lo[a] + i] += re[cells.nc * a + i];
 }
+
+/* Set the field's values at its nodes in a local array: value(X, v) at each node's reference
+   position X (an initial state). */
+void SetNodalValues(const FieldCells &cells, const std::function<void(const PetscReal X[3], PetscScalar *v)> &value, PetscScalar *x);
 
 /* Final assembly of the preconditioning matrix P and, if it is another matrix, of J. */
 PetscErrorCode AssembleOperators(Mat J, Mat P);

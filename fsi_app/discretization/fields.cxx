@@ -4,8 +4,7 @@
 
 namespace fsi {
 
-/* PETSc gives a field the points of stratum 1 of its label: the closure of the region's cells. */
-static PetscErrorCode RegionLabel(DM dm, const std::string &region, DMLabel *label)
+PetscErrorCode GetRegionLabel(DM dm, const std::string &region, DMLabel *label)
 {
   const std::string name = "region_" + region;
   PetscBool         has;
@@ -37,7 +36,7 @@ PetscErrorCode AddLagrangeField(DM dm, const std::string &name, const std::strin
   PetscCall(DMPlexIsSimplex(dm, &simplex));
   PetscCall(PetscFECreateLagrange(PetscObjectComm((PetscObject)dm), dim, nc, simplex, degree, PETSC_DETERMINE, &fe));
   PetscCall(PetscObjectSetName((PetscObject)fe, name.c_str()));
-  if (!region.empty()) PetscCall(RegionLabel(dm, region, &label));
+  if (!region.empty()) PetscCall(GetRegionLabel(dm, region, &label));
   PetscCall(DMGetNumFields(dm, field));
   PetscCall(DMSetField(dm, *field, label, (PetscObject)fe));
   PetscCall(PetscFEDestroy(&fe));

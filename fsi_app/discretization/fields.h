@@ -12,6 +12,10 @@ namespace fsi {
    ("" for every cell); returns its field number. Call DMCreateDS() after the last one. */
 PetscErrorCode AddLagrangeField(DM dm, const std::string &name, const std::string &region, PetscInt nc, PetscInt degree, PetscInt *field);
 
+/* The label "region_<group>" of the closure of group's cells (value 1; PETSc gives a field the
+   points of its label's stratum 1), made on the first call. */
+PetscErrorCode GetRegionLabel(DM dm, const std::string &region, DMLabel *label);
+
 /* Field `field` = 0 on the faces of each comma-separated group ("a,b:xz": only components x, z
    on b); `option` names the option in error messages. */
 PetscErrorCode AddZeroDirichlet(DM dm, const char *groups, PetscInt field, const char *option);

@@ -1,10 +1,15 @@
-/* The fluid block: incompressible Navier-Stokes, P2 velocity and P1 pressure (Taylor-Hood) on
-   the fluid region, on a fixed mesh for now (the ALE terms arrive with the geometry block):
-     R_u(v) = int rho (d_t u + (u . grad) u) . v + 2 mu eps(u) : eps(v) - p div v - int_faces t . v
-     R_p(q) = - int q div u
-   with d_t u the fully implicit difference of solver/time_history.h and t a prescribed
-   traction on groups of faces (natural: stress-free). Newton's Jacobian is exact (convection
-   included), so Newton converges quadratically up to the Reynolds numbers where it converges. */
+/* The fluid block: incompressible Navier-Stokes in ALE form, P2 velocity and P1 pressure
+   (Taylor-Hood) on the fluid region, on the current configuration x = X + d_f(X) of a mesh
+   moved by the P2 mesh displacement d_f (or on the fixed mesh):
+     R_u(v) = int_{Omega_t} rho (d_t u + ((u - w) . grad) u) . v + 2 mu eps(u) : eps(v) - p div v - f . v
+              - int_{faces_t} t . v
+     R_p(q) = - int_{Omega_t} q div u
+   with d_t u the fully implicit difference (solver/time_history.h) of the nodal values, which
+   move with the mesh (the time derivative at fixed X), w the same difference of d_f (the mesh
+   velocity), t a prescribed traction on groups of faces (natural: stress-free) and f a body
+   force (manufactured solutions). The Jacobian is exact in (u, p), convection included; the
+   shape derivatives (with respect to d_f) are not assembled: -snes_mf_operator gives Newton
+   the exact derivative with this matrix as preconditioner. */
 #pragma once
 
 #include "discretization/cells.h"
@@ -14,8 +19,9 @@
 
 namespace fsi {
 
-/* traction t(x, outward normal n, time) on a group of faces */
-using Traction = std::function<void(const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal traction[3])>;
+/* traction t(x, outward normal n, time) on a group of faces, in the current configuration */
+using Traction  = std::function<void(const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal traction[3])>;
+using BodyForce = std::function<void(const PetscReal x[3], PetscReal t, PetscReal f[3])>;
 
 struct TractionGroup {
   std::vector<CellFace> faces; /* faces of the velocity cells */
@@ -25,18 +31,21 @@ struct TractionGroup {
 struct FluidBlock {
   PetscReal                  rho = 1, mu = 0.03;
   FieldCells                 velocity, pressure; /* the same cells, P2 (3 components) and P1 */
-  P2Rule                     rule;               /* degree 5: the convective term exactly */
+  const FieldCells          *mesh = nullptr;     /* d_f on the same cells when the mesh moves */
+  P2Rule                     rule;               /* degree 5: the convective term exactly on a fixed mesh */
   FaceRule                   faceRule;
-  PetscReal                  mass[100];
   std::vector<TractionGroup> tractions;
-  PetscReal                  time    = 0; /* of the step being solved: for the tractions */
+  BodyForce                  force;
+  PetscReal                  time    = 0; /* of the step being solved: tractions, body force */
   const TimeHistory         *history = nullptr;
+  SNES                       snes    = nullptr; /* told when a moved cell inverts (J <= 0) */
 };
 
-PetscErrorCode FluidResidual(DM dm, Vec X, Vec F, void *ctx);
-PetscErrorCode FluidJacobian(DM dm, Vec X, Mat J, Mat P, void *ctx);
+/* BlockOps of solver/system.h (the context is the FluidBlock). */
+PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f);
+PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P);
 
-/* int_faces u . n over the faces of group g (the flux through an outlet) */
+/* int u . n da over the faces (in the current configuration): the flux through an outlet. X is global. */
 PetscErrorCode FluidFlux(DM dm, const FluidBlock &fb, const std::vector<CellFace> &faces, Vec X, PetscReal *flux);
 
 } // namespace fsi

@@ -1,24 +1,55 @@
 #include "setup.h"
-#include "verification/mms.h"
+#include "discretization/fields.h"
+#include "mesh/mesh.h"
 
 namespace fsi {
 
-PetscErrorCode SetUpFluid(const Scene &sc, DM dm, FluidBlock &fb, PetscInt *velocity, PetscInt *pressure)
+/* The manufactured flows' Dirichlet faces: the boundary but the outlet, where the exact
+   traction fixes the pressure's constant. */
+static PetscErrorCode MMSDirichletFaces(const Scene &sc, DM dm, DMLabel *faces)
+{
+  DMLabel boundary, outlet;
+
+  PetscFunctionBegin;
+  PetscCall(DMGetLabel(dm, "boundary", &boundary));
+  PetscCall(DMGetLabel(dm, sc.outlet, &outlet));
+  PetscCall(DMCreateLabel(dm, "mms_dirichlet"));
+  PetscCall(DMGetLabel(dm, "mms_dirichlet", faces));
+  PetscCall(ForEachLabelPoint(boundary, {1}, [&](PetscInt face) -> PetscErrorCode {
+    PetscInt v;
+    PetscFunctionBegin;
+    PetscCall(DMLabelGetValue(outlet, face, &v));
+    if (v < 0) PetscCall(DMLabelSetValue(*faces, face, 1));
+    PetscFunctionReturn(0);
+  }));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FluidConditions(const Scene &sc, DM dm, PetscInt velocity, const FlowMMS &flow)
+{
+  PetscFunctionBegin;
+  PetscCall(AddZeroDirichlet(dm, sc.noslip, velocity, "-fluid_noslip"));
+  if (sc.mms) {
+    DMLabel               faces;
+    std::vector<PetscInt> ids;
+    PetscCall(MMSDirichletFaces(sc, dm, &faces));
+    PetscCall(LabelValues(faces, ids));
+    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, "manufactured velocity", faces, (PetscInt)ids.size(), ids.data(), velocity, 0, nullptr, (void (*)(void))FlowMMSVelocityBC, nullptr, (void *)&flow, nullptr));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SetUpFluid(const Scene &sc, DM dm, PetscInt velocity, PetscInt pressure, const FlowMMS &flow, FluidBlock &fb)
 {
   DMLabel region;
 
   PetscFunctionBegin;
-  PetscCall(AddLagrangeField(dm, "velocity", sc.fluidRegion, 3, 2, velocity));
-  PetscCall(AddLagrangeField(dm, "pressure", sc.fluidRegion, 1, 1, pressure));
-  PetscCall(DMCreateDS(dm));
-  PetscCall(AddZeroDirichlet(dm, sc.noslip, *velocity, "-fluid_noslip"));
-  PetscCall(DMGetLabel(dm, (std::string("region_") + sc.fluidRegion).c_str(), &region));
-  PetscCall(FieldCellsCreate(dm, region, *velocity, fb.velocity));
-  PetscCall(FieldCellsCreate(dm, region, *pressure, fb.pressure));
+  PetscCall(GetRegionLabel(dm, sc.fluidRegion, &region));
+  PetscCall(FieldCellsCreate(dm, region, velocity, fb.velocity));
+  PetscCall(FieldCellsCreate(dm, region, pressure, fb.pressure));
   fb.rho = sc.rhoFluid, fb.mu = sc.muFluid;
   PetscCall(CreateP2Rule(5, fb.rule));
   PetscCall(CreateFaceRule(4, fb.faceRule));
-  PetscCall(CreateP2Mass(fb.mass));
   auto addTraction = [&](const char *group, Traction t) -> PetscErrorCode {
     DMLabel       label;
     TractionGroup tg;
@@ -29,9 +60,13 @@ PetscErrorCode SetUpFluid(const Scene &sc, DM dm, FluidBlock &fb, PetscInt *velo
     fb.tractions.push_back(tg);
     PetscFunctionReturn(0);
   };
-  if (sc.poiseuille[0] > 0) { /* the exact flow's traction sigma n at both ends */
-    const Poiseuille flow = {sc.poiseuille[0], sc.poiseuille[1], sc.poiseuille[2], sc.muFluid};
-    for (const char *g : {sc.inlet, sc.outlet}) PetscCall(addTraction(g, [flow](const PetscReal x[3], const PetscReal n[3], PetscReal, PetscReal t[3]) { PoiseuilleTraction(flow, x, n, t); }));
+  if (sc.mms) {
+    const FlowMMS *m = &flow;
+    PetscCall(addTraction(sc.outlet, [m](const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal tr[3]) { FlowMMSTraction(*m, x, n, t, tr); }));
+    fb.force = [m](const PetscReal x[3], PetscReal t, PetscReal f[3]) { FlowMMSForce(*m, x, t, f); };
+  } else if (sc.poiseuille[0] > 0) { /* the exact flow's traction sigma n at both ends */
+    const Poiseuille p = {sc.poiseuille[0], sc.poiseuille[1], sc.poiseuille[2], sc.muFluid};
+    for (const char *g : {sc.inlet, sc.outlet}) PetscCall(addTraction(g, [p](const PetscReal x[3], const PetscReal n[3], PetscReal, PetscReal t[3]) { PoiseuilleTraction(p, x, n, t); }));
   } else if (sc.inletPressure != 0) {
     const PetscReal p = sc.inletPressure, until = sc.pulseEnd;
     const PetscBool steady = (PetscBool)!sc.Dynamic(); /* time is then the load fraction: continuation in p */
@@ -40,8 +75,6 @@ PetscErrorCode SetUpFluid(const Scene &sc, DM dm, FluidBlock &fb, PetscInt *velo
       for (int d = 0; d < 3; d++) t[d] = -pt * n[d];
     }));
   }
-  PetscCall(DMSNESSetFunctionLocal(dm, FluidResidual, &fb));
-  PetscCall(DMSNESSetJacobianLocal(dm, FluidJacobian, &fb));
   PetscFunctionReturn(0);
 }
 

@@ -1,8 +1,8 @@
 /* The geometry block: the harmonic extension of the interface displacement into the fluid
-   region (the seed's eq. 5), -Lap d_f = 0 with d_f given on the interface and d_f . n = 0 on the
-   other fluid boundaries (for the tube's planar ends: the z component), P2 like the
-   structure. The ALE fluid will move its mesh with d_f; here the block stands alone
-   (-physics geometry) with the interface displacement prescribed. */
+   region (the seed's eq. 5), -Lap d_f = 0 on the reference fluid region with d_f given on the
+   interface and d_f . n = 0 on the other fluid boundaries (for the tube's planar ends: the z
+   component), P2 like the structure. The fluid's mesh moves with d_f (fluid/assembly.h). Until
+   the coupling exists, the interface displacement is prescribed (PrescribedMotion). */
 #pragma once
 
 #include "discretization/cells.h"
@@ -16,11 +16,13 @@ struct GeometryBlock {
   P2Rule     rule; /* degree 2: the P2 stiffness exactly */
 };
 
-/* Field `geometry`; `sc` must outlive the block. */
-PetscErrorCode SetUpGeometry(const Scene &sc, DM dm, GeometryBlock &gb, PetscInt *field);
+/* The conditions on field `field` (call before any block creates its cells): d_f = the motion
+   on -geometry_interface, the sliding ends of -geometry_slip. `motion` must outlive dm. */
+PetscErrorCode GeometryConditions(const Scene &sc, DM dm, PetscInt field, const PrescribedMotion &motion);
+PetscErrorCode SetUpGeometry(const Scene &sc, DM dm, PetscInt field, GeometryBlock &gb);
 
-/* The verification field: d = a (x^2 - y^2, -2 x y, 0), harmonic, and zero in z on planes z = c. */
-PetscErrorCode HarmonicQuadratic(PetscInt dim, PetscReal t, const PetscReal x[], PetscInt nc, PetscScalar *u, void *ctx);
-void           HarmonicQuadraticSolution(const PetscReal x[3], const void *ctx, PetscReal u[3], PetscReal G[9]);
+/* BlockOps of solver/system.h (the context is the GeometryBlock). */
+PetscErrorCode GeometryResidual(void *ctx, const PetscScalar *x, PetscScalar *f);
+PetscErrorCode GeometryJacobian(void *ctx, const PetscScalar *x, Mat P);
 
 } // namespace fsi

@@ -47,6 +47,16 @@ PetscErrorCode TimeHistoryPush(TimeHistory &h, Vec x, PetscReal t)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode TimeHistorySetState(TimeHistory &h, Vec x)
+{
+  PetscFunctionBegin;
+  for (Vec v : h.past) {
+    PetscCall(DMGlobalToLocal(h.dm, x, INSERT_VALUES, v));
+    PetscCall(InsertEssentialValues(h.dm, 0.0, v));
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode TimeHistoryDuplicate(const TimeHistory &h, TimeHistory &copy)
 {
   PetscFunctionBegin;

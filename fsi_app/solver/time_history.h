@@ -30,6 +30,10 @@ PetscErrorCode TimeHistoryDestroy(TimeHistory &h);
 /* x^(n+1) (global, at time t) becomes x^n, with its essential values: the states shift by one. */
 PetscErrorCode TimeHistoryPush(TimeHistory &h, Vec x, PetscReal t);
 
+/* Every past state becomes x (global, essential values at t = 0): a start from a state held
+   since t = -infinity. */
+PetscErrorCode TimeHistorySetState(TimeHistory &h, Vec x);
+
 /* A new history with the states and step of h; copy one into another of the same shape. */
 PetscErrorCode TimeHistoryDuplicate(const TimeHistory &h, TimeHistory &copy);
 PetscErrorCode TimeHistoryCopy(const TimeHistory &from, TimeHistory &to);

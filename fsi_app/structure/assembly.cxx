@@ -1,19 +1,8 @@
 #include "assembly.h"
-#include "discretization/nodes.h"
+#include "discretization/ale_map.h"
 #include "verification/mms.h"
 
 namespace fsi {
-
-/* F = I + grad d at a point, from the nodal displacements; returns det F. */
-static PetscReal DeformationGradient(const PetscReal de[30], const PetscReal dN[10][3], PetscReal F[9])
-{
-  for (int i = 0; i < 3; i++)
-    for (int j = 0; j < 3; j++) F[i * 3 + j] = (i == j);
-  for (int a = 0; a < 10; a++)
-    for (int i = 0; i < 3; i++)
-      for (int j = 0; j < 3; j++) F[i * 3 + j] += de[3 * a + i] * dN[a][j];
-  return F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
-}
 
 static void PointOf(const CellGeometry &g, const PetscReal l[4], PetscReal x[3])
 {
@@ -97,20 +86,14 @@ static PetscReal Inertia(const StructureBlock &sb)
   return sb.history && !sb.history->past.empty() ? sb.rho / (sb.history->dt * sb.history->dt) : 0.0;
 }
 
-PetscErrorCode StructureResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
+PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
 {
   const StructureBlock      &sb      = *(StructureBlock *)ctx;
   const PetscReal            inertia = Inertia(sb);
-  const PetscScalar         *x;
   std::vector<const PetscScalar *> past;
-  PetscScalar               *f;
   PetscInt                   inverted = 0;
 
   PetscFunctionBegin;
-  PetscCall(InsertEssentialValues(dm, 0.0, Xl));
-  PetscCall(VecZeroEntries(Fl));
-  PetscCall(VecGetArrayRead(Xl, &x));
-  PetscCall(VecGetArray(Fl, &f));
   if (inertia)
     for (Vec v : sb.history->past) {
       const PetscScalar *y;
@@ -174,25 +157,19 @@ PetscErrorCode StructureResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
       Scatter(sb.cells, face.k, re, f);
     }
   for (size_t j = 0; j < past.size(); j++) PetscCall(VecRestoreArrayRead(sb.history->past[j], &past[j]));
-  PetscCall(VecRestoreArray(Fl, &f));
-  PetscCall(VecRestoreArrayRead(Xl, &x));
   if (inverted) {
-    PetscCall(PetscInfo(dm, "%" PetscInt_FMT " quadrature points with det F <= 0: the step is outside the domain of the law\n", inverted));
+    PetscCall(PetscInfo(sb.snes, "%" PetscInt_FMT " quadrature points with det F <= 0: the step is outside the domain of the law\n", inverted));
     if (sb.snes) PetscCall(SNESSetFunctionDomainError(sb.snes));
   }
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode StructureJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
+PetscErrorCode StructureJacobian(void *ctx, const PetscScalar *x, Mat P)
 {
   const StructureBlock &sb   = *(StructureBlock *)ctx;
   const PetscReal       mass = Inertia(sb) * (sb.history ? sb.history->second[0] : 0.0);
-  const PetscScalar    *x;
 
   PetscFunctionBegin;
-  PetscCall(InsertEssentialValues(dm, 0.0, Xl));
-  PetscCall(MatZeroEntries(P));
-  PetscCall(VecGetArrayRead(Xl, &x));
   for (PetscInt k = 0; k < sb.cells.Size(); k++) {
     const CellGeometry &g = sb.cells.geom[k];
     PetscReal           de[30], K[900] = {0};
@@ -228,8 +205,6 @@ PetscErrorCode StructureJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
       PressureTangent(sb, face, de, K);
       PetscCall(MatSetValues(P, 30, &sb.cells.global[30 * face.k], 30, &sb.cells.global[30 * face.k], K, ADD_VALUES));
     }
-  PetscCall(VecRestoreArrayRead(Xl, &x));
-  PetscCall(AssembleOperators(J, P));
   PetscFunctionReturn(0);
 }
 

@@ -33,8 +33,8 @@ struct StructureBlock {
   const TimeHistory *history  = nullptr;
 };
 
-/* DMSNES local callbacks (the context is the StructureBlock). */
-PetscErrorCode StructureResidual(DM dm, Vec X, Vec F, void *ctx);
-PetscErrorCode StructureJacobian(DM dm, Vec X, Mat J, Mat P, void *ctx);
+/* BlockOps of solver/system.h (the context is the StructureBlock). */
+PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f);
+PetscErrorCode StructureJacobian(void *ctx, const PetscScalar *x, Mat P);
 
 } // namespace fsi

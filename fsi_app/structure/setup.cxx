@@ -4,12 +4,22 @@
 
 namespace fsi {
 
-PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb, PetscInt *field)
+PetscErrorCode StructureConditions(const Scene &sc, DM dm, PetscInt field)
 {
   PetscFunctionBegin;
-  PetscCheck(sc.degree == 2, PETSC_COMM_WORLD, PETSC_ERR_SUP, "-structure_degree %" PetscInt_FMT ": the element loops are P2 (use 2)", sc.degree);
-  PetscCall(AddLagrangeField(dm, "displacement", sc.region, 3, sc.degree, field));
-  PetscCall(DMCreateDS(dm));
+  if (sc.mms) {
+    DMLabel        boundary;
+    const PetscInt one = 1;
+    PetscCall(DMGetLabel(dm, "boundary", &boundary));
+    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, "boundary", boundary, 1, &one, field, 0, nullptr, (void (*)(void))MMSElasticityExact, nullptr, (void *)&sc.mmsAmplitude, nullptr));
+  }
+  PetscCall(AddZeroDirichlet(dm, sc.clamp, field, "-structure_clamp"));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SetUpStructure(const Scene &sc, DM dm, PetscInt field, StructureBlock &sb)
+{
+  PetscFunctionBegin;
   PetscCall(GetMaterialLaw(sc.material, &sb.law));
   switch (sc.material) {
   case LINEAR_ELASTIC:
@@ -24,21 +34,14 @@ PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb, PetscI
     break;
   }
   sb.mms = sc.mms ? sc.mmsAmplitude : 0.0;
-  if (sc.region[0]) PetscCall(DMGetLabel(dm, (std::string("region_") + sc.region).c_str(), &sb.region));
+  if (sc.region[0]) PetscCall(GetRegionLabel(dm, sc.region, &sb.region));
   /* affine P2 stiffness: degree 2 (exact for the linear law); the trigonometric load: more */
   PetscCall(CreateP2Rule(sc.mms ? 5 : 2, sb.rule));
   PetscCall(CreateP2Mass(sb.mass));
   PetscCall(CreateFaceRule(sc.follower ? 4 : 2, sb.faceRule)); /* P2 times the normal: constant (dead) or quadratic (follower) */
   sb.follower = sc.follower;
   sb.rho      = sc.rho;
-  if (sc.mms) {
-    DMLabel        boundary;
-    const PetscInt one = 1;
-    PetscCall(DMGetLabel(dm, "boundary", &boundary));
-    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, "boundary", boundary, 1, &one, *field, 0, nullptr, (void (*)(void))MMSElasticityExact, nullptr, (void *)&sc.mmsAmplitude, nullptr));
-  }
-  PetscCall(AddZeroDirichlet(dm, sc.clamp, *field, "-structure_clamp"));
-  PetscCall(FieldCellsCreate(dm, sb.region, *field, sb.cells)); /* after the constraints: they set the global indices */
+  PetscCall(FieldCellsCreate(dm, sb.region, field, sb.cells));
   if (sc.pressure != 0) {
     DMLabel loaded;
     PetscCall(DMGetLabel(dm, sc.loaded, &loaded));
@@ -50,8 +53,6 @@ PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb, PetscI
     PetscCall(CellFacesCreate(dm, sb.cells, group, sb.tractionFaces));
   }
   for (int d = 0; d < 3; d++) sb.bodyForce[d] = sc.bodyForce[d], sb.traction[d] = sc.traction[d];
-  PetscCall(DMSNESSetFunctionLocal(dm, StructureResidual, &sb));
-  PetscCall(DMSNESSetJacobianLocal(dm, StructureJacobian, &sb));
   PetscFunctionReturn(0);
 }
 
@@ -59,7 +60,7 @@ PetscReal StructureLoadFactor(const Scene &sc, PetscReal t)
 {
   if (!sc.Dynamic()) return t;
   if (sc.pulseEnd > 0 && t > sc.pulseEnd + 1e-12) return 0.0;
-  return t < sc.ramp ? PetscSqr(PetscSinReal(PETSC_PI * t / (2 * sc.ramp))) : 1.0;
+  return SmoothRamp(t, sc.ramp);
 }
 
 } // namespace fsi

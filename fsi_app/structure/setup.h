@@ -1,5 +1,5 @@
-/* The structure block of a scene: its displacement field on the wall's region, the material,
-   the loads and the Dirichlet conditions, and its residual and Jacobian on the DM. */
+/* The structure block of a scene on its displacement field (the wall's region): the material,
+   the loads and the Dirichlet conditions. */
 #pragma once
 
 #include "scene.h"
@@ -7,8 +7,10 @@
 
 namespace fsi {
 
-/* `sc` must outlive the block (the manufactured solution's boundary values point into it). */
-PetscErrorCode SetUpStructure(const Scene &sc, DM dm, StructureBlock &sb, PetscInt *field);
+/* The Dirichlet conditions on field `field` (before any block creates its cells: they decide
+   the global numbering); `sc` must outlive dm (the manufactured solution's values point into it). */
+PetscErrorCode StructureConditions(const Scene &sc, DM dm, PetscInt field);
+PetscErrorCode SetUpStructure(const Scene &sc, DM dm, PetscInt field, StructureBlock &sb);
 
 /* The factor of every load (pressure, traction, body force) at time t (dynamics: the pulse and
    its ramp) or load fraction t (statics). */

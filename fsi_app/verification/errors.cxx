@@ -1,13 +1,15 @@
 #include "errors.h"
+#include "discretization/ale_map.h"
 #include "discretization/nodes.h"
 
 namespace fsi {
 
-PetscErrorCode ComputeErrors(DM dm, const FieldCells &cells, Vec X, PetscReal t, ExactSolution exact, const void *ctx, Errors &e)
+PetscErrorCode ComputeErrors(DM dm, const FieldCells &cells, Vec X, PetscReal t, ExactSolution exact, const void *ctx, Errors &e, const FieldCells *mesh)
 {
-  P2Rule    rule;
-  Vec       Xl;
-  PetscReal sum[4] = {0, 0, 0, 0};
+  P2Rule         rule;
+  Vec            Xl;
+  PetscReal      sum[4] = {0, 0, 0, 0};
+  const PetscInt nc = cells.nc, p2 = cells.nodes == 10;
 
   PetscFunctionBegin;
   PetscCall(CreateP2Rule(8, rule)); /* smooth exact solutions: beyond the P2 error's order */
@@ -18,20 +20,25 @@ PetscErrorCode ComputeErrors(DM dm, const FieldCells &cells, Vec X, PetscReal t,
   PetscCall(VecGetArrayRead(Xl, &xa));
   for (PetscInt k = 0; k < cells.Size(); k++) {
     const CellGeometry &g = cells.geom[k];
-    PetscReal           de[30];
-    Gather(cells, k, xa, de);
+    PetscReal           ve[30], de[30];
+    Gather(cells, k, xa, ve);
+    if (mesh) Gather(*mesh, k, xa, de);
     for (PetscInt q = 0; q < rule.nq; q++) {
-      const PetscReal *l = &rule.lambda[4 * q], *N = &rule.N[10 * q], w = rule.w[q] * g.detE;
-      PetscReal        dN[10][3], xq[3], u[3], G[9], uh[3] = {0, 0, 0}, Gh[9] = {0};
-      P2Gradients(g, l, dN);
-      for (int d = 0; d < 3; d++) xq[d] = l[0] * g.x[0][d] + l[1] * g.x[1][d] + l[2] * g.x[2][d] + l[3] * g.x[3][d];
-      exact(xq, ctx, u, G);
-      for (int a = 0; a < 10; a++)
-        for (int i = 0; i < 3; i++) {
-          uh[i] += N[a] * de[3 * a + i];
-          for (int j = 0; j < 3; j++) Gh[i * 3 + j] += dN[a][j] * de[3 * a + i];
+      const PetscReal *l = &rule.lambda[4 * q], *N = &rule.N[10 * q];
+      MovedPoint       m;
+      PetscReal        u[3], G[9], uh[3] = {0, 0, 0}, Gh[9] = {0};
+      PetscCheck(MovePoint(g, mesh ? de : nullptr, l, N, m) > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "the moved mesh is inverted in cell %" PetscInt_FMT, cells.cell[k]);
+      const PetscReal w = rule.w[q] * g.detE * m.J;
+      exact(m.x, t, ctx, u, G);
+      for (PetscInt a = 0; a < cells.nodes; a++) {
+        const PetscReal  Na = p2 ? N[a] : l[a];
+        const PetscReal *dN = p2 ? m.dN[a] : m.dL[a];
+        for (PetscInt i = 0; i < nc; i++) {
+          uh[i] += Na * ve[nc * a + i];
+          for (int j = 0; j < 3; j++) Gh[i * 3 + j] += dN[j] * ve[nc * a + i];
         }
-      for (int i = 0; i < 3; i++) {
+      }
+      for (PetscInt i = 0; i < nc; i++) {
         sum[0] += w * PetscSqr(uh[i] - u[i]), sum[2] += w * u[i] * u[i];
         for (int j = 0; j < 3; j++) sum[1] += w * PetscSqr(Gh[i * 3 + j] - G[i * 3 + j]), sum[3] += w * G[i * 3 + j] * G[i * 3 + j];
       }

@@ -31,10 +31,42 @@ struct Poiseuille {
 };
 /* sigma n = (-p I + mu (grad u + grad u^T)) n of the exact flow */
 void PoiseuilleTraction(const Poiseuille &f, const PetscReal x[3], const PetscReal n[3], PetscReal t[3]);
-void PoiseuilleVelocity(const PetscReal x[3], const void *ctx, PetscReal u[3], PetscReal G[9]);
+void PoiseuilleVelocity(const PetscReal x[3], PetscReal t, const void *ctx, PetscReal u[3], PetscReal G[9]);
 
-/* Value and gradient of an exact solution at x: the form verification/errors.h integrates. */
-void MMSElasticitySolution(const PetscReal x[3], const void *ctx, PetscReal u[3], PetscReal G[9]);
-void LameSolution(const PetscReal x[3], const void *ctx, PetscReal u[3], PetscReal G[9]);
+/* The prescribed interface displacement d = a s(t) (x^2 - y^2, -2 x y, 0): harmonic, zero in z
+   on planes z = c, with s the smooth ramp of scene.h (s = 1 in statics). */
+struct PrescribedMotion {
+  PetscReal a, ramp;
+  PetscBool dynamic;
+};
+void           PrescribedDisplacement(const PrescribedMotion &m, const PetscReal X[3], PetscReal t, PetscReal d[3], PetscReal G[9]);
+PetscErrorCode PrescribedDisplacementBC(PetscInt dim, PetscReal t, const PetscReal X[], PetscInt nc, PetscScalar *u, void *ctx);
+void           PrescribedDisplacementSolution(const PetscReal X[3], PetscReal t, const void *ctx, PetscReal u[3], PetscReal G[9]);
+
+/* A manufactured flow on a fixed or moving mesh. Trigonometric: u = s(t) U(x), p = s(t) P(x),
+   U = (sin(pi y) sin(pi z), sin(pi z) sin(pi x), sin(pi x) sin(pi y)) (divergence-free: no
+   component depends on its own coordinate), P = cos(pi x) cos(pi y) cos(pi z), s the smooth ramp
+   of scene.h over `ramp` (s = 1 in statics). Uniform: u = (1, 1/2, 1/4), p = 0 at all times
+   (geometric conservation: it must stay so on any moving mesh). The body force
+   f = rho (d_t u + (u . grad) u) - mu Lap u + grad p, with d_t at fixed x, makes either a
+   solution of the ALE equations whatever the mesh does. */
+enum FlowMMSKind { FLOW_MMS_TRIGONOMETRIC = 0, FLOW_MMS_UNIFORM = 1 };
+extern const char *const FlowMMSKindNames[];
+struct FlowMMS {
+  FlowMMSKind             kind = FLOW_MMS_TRIGONOMETRIC;
+  PetscReal               rho = 1, mu = 1, ramp = 0;
+  PetscBool               dynamic = PETSC_FALSE;
+  const PrescribedMotion *motion  = nullptr; /* where the boundary nodes are at time t (nullptr: fixed) */
+};
+void FlowMMSForce(const FlowMMS &m, const PetscReal x[3], PetscReal t, PetscReal f[3]);
+void FlowMMSTraction(const FlowMMS &m, const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal traction[3]);
+/* the exact velocity at the node X moved to X + d(X, t): PETSc's boundary-value signature */
+PetscErrorCode FlowMMSVelocityBC(PetscInt dim, PetscReal t, const PetscReal X[], PetscInt nc, PetscScalar *u, void *ctx);
+
+/* Value and gradient of an exact solution at x (and time t): the form verification/errors.h integrates. */
+void MMSElasticitySolution(const PetscReal x[3], PetscReal t, const void *ctx, PetscReal u[3], PetscReal G[9]);
+void LameSolution(const PetscReal x[3], PetscReal t, const void *ctx, PetscReal u[3], PetscReal G[9]);
+void FlowMMSVelocity(const PetscReal x[3], PetscReal t, const void *ctx, PetscReal u[3], PetscReal G[9]);
+void FlowMMSPressure(const PetscReal x[3], PetscReal t, const void *ctx, PetscReal p[3], PetscReal G[9]);
 
 } // namespace fsi
