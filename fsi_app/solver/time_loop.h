@@ -25,6 +25,7 @@ struct TimeLoop {
   PetscInt                                   steps, maxCuts;
   PetscBool                                  dynamic;
   std::function<PetscErrorCode(PetscReal t)> setTime;   /* loads at time (or load fraction) t */
+  std::function<PetscErrorCode(PetscReal t, Vec x)> predict; /* the first iterate of the step to t (may be empty) */
   std::function<PetscErrorCode(PetscInt step, PetscReal t, Vec x)> afterStep; /* output, checkpoints */
 };
 
