@@ -80,8 +80,11 @@ static PetscErrorCode CreateSolver(const Scene &sc, DM dm, PetscInt field, SNES 
     PetscCall(SNESGetLineSearch(*snes, &ls));
     PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHCP));
   }
-  PetscCall(SNESSetFromOptions(*snes));
   PetscCall(SNESGetKSP(*snes, &ksp));
+  /* a Krylov solve that needs more iterations has failed (an indefinite tangent far from the
+     solution): the step is halved instead of iterating for minutes (PETSc's default is 10000) */
+  PetscCall(KSPSetTolerances(ksp, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 500));
+  PetscCall(SNESSetFromOptions(*snes));
   PetscCall(KSPGetPC(ksp, &pc));
   if (structure) PetscCall(SetGDSWSubdomains(pc, dm, J, sc.region, field, sc.subdomains));
   PetscCall(MatDestroy(&J));

@@ -499,6 +499,21 @@ def fluid_ale_inverted_mesh():
 
 
 @case
+def structure_indefinite_tangent():
+    """225 times the seed's pressure on the Neo-Hooke wall of tube #1 with a full Newton step
+    (basic line search): the first iterate compresses the wall so far that the tangent is
+    indefinite in the subdomains. gdsw's Cholesky (CHOLMOD) fails there and is redone as LU for
+    those subdomains (the -info line says so) instead of stopping the run; the step is halved
+    twice, and the run stops with a sentence (GMRES is bounded by fsi_app's 500-iteration
+    default: no run of minutes), on 2 ranks, and prints no NaN.""" 
+    out = run([APP, "-options_file", os.path.join(MESHES, "..", "scenes", "wall_tube1_pulse.opts"), "-mesh", os.path.join(MESHES, "tube1_L0.msh"),
+               "-structure_pressure", 3e5, "-t_final", 1e-3, "-snes_linesearch_type", "basic", "-max_step_cuts", 2, "-info", ":pc"], 2, fail=True)
+    assert re.search(r"Cholesky failed on the interior matrix of subdomain \d+ \(\d+ dofs, not positive definite\): LU instead", out), out[-3000:]
+    assert re.search(r"(the linear solver failed|Newton did not converge) in step 1 \(DIVERGED_\w+, also on the step halved 2 times\)", out), out[-3000:]
+    assert "CHOLMOD detected" not in out and not re.search(r"\bnan\b", out, re.I)
+
+
+@case
 def app_help():
     """-help lists every application option the README's options table documents, each with its
     default (PETSc prints <default>)."""
