@@ -1,10 +1,13 @@
 #!/usr/bin/python3
-"""Error against run time for the structure's verification scenes: Lame's cylinder (quarter,
-levels 0-2) and the manufactured solution on the unit cube (refined 0-2), linear elastic P2,
-one line per preconditioner (points: mesh levels), 2 MPI ranks, CG to rtol 1e-10. Time is the
-solve loop's wall clock from the run report (assembly + set-up + iterations), error the
-relative L2 norm against the exact solution. Writes bench/results/work_precision.{csv,cmd,png}.
-Usage: scripts/bench_work_precision.py [--plot]   (--plot redraws the PNG from the CSV)"""
+"""Error against run time, one line per preconditioner (points: mesh levels), 2 MPI ranks. Time
+is the solve loop's wall clock from the run report (assembly + set-up + iterations), error the
+relative L2 norm of the displacement or velocity against the exact solution.
+  structure: Lame's cylinder (quarter, levels 0-2) and the manufactured solution on the unit
+             cube (refined 0-2), linear elastic P2, CG to rtol 1e-10 -> bench/results/work_precision.*
+  fluid:     the manufactured Navier-Stokes flow on the cube displaced by the harmonic field
+             (refined 0-2), steady and with the mesh moving under it (4 BDF2 steps), FGMRES to
+             rtol 1e-8 -> bench/results/work_precision_fluid.*
+Usage: scripts/bench_work_precision.py [structure|fluid] [--plot]   (--plot redraws the PNG from the CSV)"""
 import csv
 import json
 import os
@@ -15,18 +18,37 @@ from benchlib import run, write_results
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 app = os.path.join(os.environ.get("GDSW_BUILD", os.path.join(top, "build")), "fsi_app", "fsi_app")
-out = os.path.join(top, "bench", "results", "work_precision")
-
-PCS = {
-    "gdsw": "-ksp_type cg -pc_type gdsw",
-    "PCASM": "-ksp_type cg -pc_type asm -pc_asm_overlap 1 -pc_asm_type basic -sub_pc_type cholesky -sub_pc_factor_mat_solver_type cholmod",
-    "GAMG": "-ksp_type cg -pc_type gamg",
-    "MUMPS (direct)": "-ksp_type preonly -pc_type cholesky -pc_factor_mat_solver_type mumps",
+ALE = f"-options_file {top}/scenes/fluid_ale_mms_cube.opts"
+FAMILIES = {
+    "structure": {
+        "out": "work_precision", "unknowns": ("structure",), "solver": "-ksp_rtol 1e-10",
+        "pcs": {
+            "gdsw": "-ksp_type cg -pc_type gdsw",
+            "PCASM": "-ksp_type cg -pc_type asm -pc_asm_overlap 1 -pc_asm_type basic -sub_pc_type cholesky -sub_pc_factor_mat_solver_type cholmod",
+            "GAMG": "-ksp_type cg -pc_type gamg",
+            "MUMPS (direct)": "-ksp_type preonly -pc_type cholesky -pc_factor_mat_solver_type mumps",
+        },
+        "scenes": {
+            "Lame cylinder": [f"-options_file {top}/scenes/lame_cylinder.opts -mesh {top}/meshes/quarter_cylinder_L{k}.msh" for k in range(3)],
+            "manufactured (cube)": [f"-options_file {top}/scenes/mms_elasticity_cube.opts -refine {k}" for k in range(3)],
+        },
+    },
+    "fluid": {
+        "out": "work_precision_fluid", "unknowns": ("fluid", "pressure", "geometry"), "solver": "-ksp_rtol 1e-8",
+        "pcs": {
+            "fieldsplit: GAMG | Schur selfp, BoomerAMG": "-fieldsplit_1_pc_type fieldsplit",
+            "fieldsplit: GAMG | flow by MUMPS": "",
+            "MUMPS (direct, monolithic)": "-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps",
+        },
+        "scenes": {
+            "manufactured flow, displaced cube": [f"{ALE} -refine {k}" for k in range(3)],
+            "the same, mesh moving (4 BDF2 steps)": [f"{ALE} -refine {k} -dt 0.25 -t_final 1 -geometry_ramp 1" for k in range(3)],
+        },
+    },
 }
-SCENES = {
-    "Lame cylinder": [f"-options_file {top}/scenes/lame_cylinder.opts -mesh {top}/meshes/quarter_cylinder_L{k}.msh" for k in range(3)],
-    "manufactured (cube)": [f"-options_file {top}/scenes/mms_elasticity_cube.opts -refine {k}" for k in range(3)],
-}
+FAMILY = next((a for a in sys.argv[1:] if a in FAMILIES), "structure")
+PCS, SCENES = FAMILIES[FAMILY]["pcs"], FAMILIES[FAMILY]["scenes"]
+out = os.path.join(top, "bench", "results", FAMILIES[FAMILY]["out"])
 
 
 def main():
@@ -39,7 +61,7 @@ def main():
     for scene, levels in SCENES.items():
         for level, sopts in enumerate(levels):
             for pc, popts in PCS.items():
-                cmd = f"mpiexec -n 2 {app} {sopts} {popts} -ksp_rtol 1e-10 -report {report}"
+                cmd = f"mpiexec -n 2 {app} {sopts} {popts} {FAMILIES[FAMILY]['solver']} -report {report}"
                 if os.path.exists(report):
                     os.remove(report)
                 log = run(cmd, timeout=1800)
@@ -47,7 +69,7 @@ def main():
                     print(log[-1500:])
                     continue
                 r = json.load(open(report))
-                row = {"scene": scene, "level": level, "preconditioner": pc, "dofs": r["unknowns"]["structure"],
+                row = {"scene": scene, "level": level, "preconditioner": pc, "dofs": sum(r["unknowns"][u] for u in FAMILIES[FAMILY]["unknowns"]),
                        "l2_relative": r["results"]["l2_relative"], "h1_relative": r["results"]["h1_relative"],
                        "seconds": r["seconds"]["total"], "krylov": sum(s["krylov"] for s in r["steps"]), "peak_memory_mib": r["peak_memory_mib"]}
                 print(row, flush=True)
@@ -67,7 +89,7 @@ def plot(rows):
             pts = sorted((int(r["dofs"]), float(r["seconds"]), float(r["l2_relative"])) for r in rows if r["scene"] == scene and r["preconditioner"] == pc)
             if pts:  # joined in the order of the mesh levels
                 ax.loglog([p[1] for p in pts], [p[2] for p in pts], "o-", label=pc)
-        ax.set_title(f"{scene}, P2, 2 ranks")
+        ax.set_title(f"{scene}, P2, 2 ranks", fontsize=9)
         ax.set_xlabel("time to solution (s)")
         ax.set_ylabel("relative L2 error")
         ax.grid(True, which="both", alpha=0.3)

@@ -492,10 +492,13 @@ def fluid_ale_geometric_conservation():
 def fluid_ale_inverted_mesh():
     """A prescribed interface displacement too large for its harmonic extension (a = 0.5: J < 0
     near the corner x = y = 1) stops, on 2 ranks, with a sentence naming the option, a nonzero
-    exit status and no NaN printed."""
+    exit status and no NaN printed; no-slip walls on a moving mesh (they would need u = w, which
+    the coupling will impose) are refused with a sentence."""
     out = run([APP] + ALE_CUBE + ["-geometry_amplitude", 0.5], 2, fail=True)
     assert "a cell of the moved fluid mesh inverted (J <= 0)" in out and "reduce -geometry_amplitude (0.5 now)" in out, out[-2000:]
     assert not re.search(r"\bnan\b", out, re.I)
+    out = run([APP] + ALE_CUBE + ["-fluid_noslip", "x0"], 1, fail=True)
+    assert "-fluid_moving_mesh with -fluid_noslip x0: a wall that moves needs u = w" in out, out[-2000:]
 
 
 @case
