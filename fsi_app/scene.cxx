@@ -53,6 +53,9 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(PetscOptionsReal("-fluid_density", "density of the fluid (g/cm^3)", nullptr, sc.rhoFluid, &sc.rhoFluid, nullptr));
   PetscCall(PetscOptionsReal("-fluid_viscosity", "dynamic viscosity of the fluid (poise)", nullptr, sc.muFluid, &sc.muFluid, nullptr));
   PetscCall(PetscOptionsReal("-fluid_inlet_pressure", "normal stress: traction -p n on the faces of -fluid_inlet (dyn/cm^2); the pulse ends at -structure_pressure_until", nullptr, sc.inletPressure, &sc.inletPressure, nullptr));
+  n = 3;
+  PetscCall(PetscOptionsRealArray("-fluid_inflow_velocity", "prescribed velocity ux,uy,uz on the faces of -fluid_inlet (cm/s; no-slip groups keep u = 0 on their nodes)", nullptr, sc.inflowVelocity, &n, &sc.inflow));
+  PetscCheck(!sc.inflow || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_inflow_velocity: give ux,uy,uz (got %" PetscInt_FMT " values)", n);
   PetscCall(PetscOptionsString("-fluid_inlet", "group of the inflow faces", nullptr, sc.inlet, sc.inlet, sizeof(sc.inlet), nullptr));
   PetscCall(PetscOptionsString("-fluid_outlet", "group of the outflow faces (stress-free)", nullptr, sc.outlet, sc.outlet, sizeof(sc.outlet), nullptr));
   PetscCall(PetscOptionsString("-geometry_interface", "group where the fluid's mesh displacement is the structure's", nullptr, sc.interface, sc.interface, sizeof(sc.interface), nullptr));
@@ -91,6 +94,7 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCheck(sc.dt >= 0 && (sc.dt == 0 || sc.tFinal >= sc.dt), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-dt %g -t_final %g: need 0 <= dt <= t_final", (double)sc.dt, (double)sc.tFinal);
   PetscCheck(sc.geometryRamp >= 0 && sc.mmsRamp >= 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-geometry_ramp %g -mms_ramp %g: must be >= 0", (double)sc.geometryRamp, (double)sc.mmsRamp);
   PetscCheck(!sc.movingMesh || sc.physics == PHYSICS_FLUID, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_moving_mesh: only with -physics fluid (-physics %s)", PhysicsNames[sc.physics]);
+  PetscCheck(!sc.inflow || (sc.inletPressure == 0 && !sc.mms && sc.poiseuille[0] == 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_inflow_velocity: the inlet cannot also take -fluid_inlet_pressure, -mms or -poiseuille (one condition per face)");
   PetscCheck(!sc.movingMesh || !sc.noslip[0], PETSC_COMM_WORLD, PETSC_ERR_SUP, "-fluid_moving_mesh with -fluid_noslip %s: a wall that moves needs u = w (the mesh velocity) there, which the coupling to the structure will impose; until then a moving mesh takes the manufactured flows' boundary values (-mms) and -fluid_noslip must be empty", sc.noslip);
   PetscCheck(sc.ramp >= 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_pressure_ramp %g: must be >= 0", (double)sc.ramp);
   PetscCheck(sc.rhoFluid > 0 && sc.muFluid > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-fluid_density %g -fluid_viscosity %g: both must be positive", (double)sc.rhoFluid, (double)sc.muFluid);

@@ -41,6 +41,8 @@ struct Scene {
   char      noslip[256]     = "interface"; /* groups with u = 0 */
   PetscReal rhoFluid = 1.0, muFluid = 0.03; /* g/cm^3, poise */
   PetscReal inletPressure = 0;              /* normal stress -p n on the inlet group (dyn/cm^2) */
+  PetscReal inflowVelocity[3] = {0, 0, 0};  /* or a prescribed velocity there (cm/s) */
+  PetscBool inflow = PETSC_FALSE;
   char      inlet[64] = "inlet", outlet[64] = "outlet";
   PetscReal poiseuille[3] = {0, 0, 0};      /* verification: R, L, pressure drop */
   /* geometry (harmonic extension) */

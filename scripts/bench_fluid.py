@@ -1,13 +1,18 @@
 #!/usr/bin/python3
-"""The fluid block's linear solver as the mesh is refined and the step varies: the seed's inflow
-pulse in the rigid tube #1 (fluid alone, backward Euler, 4 steps), FGMRES with the fieldsplit
-Schur/selfp + BoomerAMG preconditioner of scenes/fluid_simple.opts against a MUMPS direct solve:
-Newton steps per time step, Krylov iterations per Newton step, time per step split into
-assembly, set-up and iterations (from the run report), peak memory. 2 MPI ranks.
-Writes bench/results/fluid_solver.{csv,cmd}.   Usage: scripts/bench_fluid.py"""
+"""The fluid block's linear solver as the mesh is refined twice and the step varies: the seed's
+inflow pulse in the rigid tube #1 (fluid alone, backward Euler, 4 steps; tube1_L0-L2, make-meshes
+makes L2), FGMRES with the fieldsplit Schur/selfp + BoomerAMG preconditioner of
+scenes/fluid_simple.opts against a MUMPS direct solve (on L2 at one step size: its factorisation
+is the cost): Newton steps per time step, Krylov iterations per Newton step, time per step split
+into assembly, set-up and iterations (from the run report), peak memory. 2 MPI ranks.
+Writes bench/results/fluid_solver.{csv,cmd}.
+`seed`: the fluid of the seed-size tube #1 mesh (make-meshes tube1 seed), fieldsplit, 2 steps
+of 5e-4 -> bench/results/fluid_seed.{csv,cmd}.
+Usage: scripts/bench_fluid.py [seed]"""
 import json
 import os
 import subprocess
+import sys
 import tempfile
 
 from benchlib import run, write_results
@@ -19,14 +24,20 @@ SOLVERS = {"fieldsplit (Schur selfp, BoomerAMG)": "",
 
 
 def main():
+    seed = sys.argv[1:] == ["seed"]
     rows, cmds = [], []
     report = os.path.join(tempfile.mkdtemp(), "r.json")
     load = subprocess.run(["uptime"], stdout=subprocess.PIPE, text=True).stdout.strip()
-    for mesh in ("tube1_L0", "tube1_L1"):
-        for dt in ("1e-4", "5e-4", "2e-3"):
+    for mesh, level in ((("tube1_seed", "seed"),) if seed else (("tube1_L0", "0"), ("tube1_L1", "1"), ("tube1_L2", "2"))):
+        if not os.path.exists(f"{top}/meshes/{mesh}.msh"):
+            subprocess.run([f"{top}/scripts/make-meshes", "tube1", level], check=True)
+        for dt in (("5e-4",) if seed else ("1e-4", "5e-4", "2e-3")):
             for name, opts in SOLVERS.items():
+                if (seed or mesh == "tube1_L2") and "MUMPS" in name and (seed or dt != "5e-4"):
+                    continue
+                steps = 2 if seed else 4
                 cmd = (f"mpiexec -n 2 {app} -options_file {top}/scenes/fluid_tube1_pulse.opts -mesh {top}/meshes/{mesh}.msh "
-                       f"-dt {dt} -t_final {4 * float(dt)} {opts} -report {report}")
+                       f"-dt {dt} -t_final {steps * float(dt)} {opts} -report {report}")
                 if os.path.exists(report):
                     os.remove(report)
                 log = run(cmd, timeout=1800)
@@ -47,7 +58,8 @@ def main():
                 rows.append(row)
                 cmds.append(cmd)
     load += " / after: " + subprocess.run(["uptime"], stdout=subprocess.PIPE, text=True).stdout.strip()
-    write_results(os.path.join(top, "bench", "results", "fluid_solver"), rows, cmds, f"scripts/bench_fluid.py (load: {load})")
+    name = "fluid_seed" if seed else "fluid_solver"
+    write_results(os.path.join(top, "bench", "results", name), rows, cmds, f"scripts/bench_fluid.py{' seed' if seed else ''} (load: {load})")
 
 
 if __name__ == "__main__":

@@ -7,10 +7,13 @@ relative L2 norm of the displacement or velocity against the exact solution.
   fluid:     the manufactured Navier-Stokes flow on the cube displaced by the harmonic field
              (refined 0-2), steady and with the mesh moving under it (4 BDF2 steps), FGMRES to
              rtol 1e-8 -> bench/results/work_precision_fluid.*
-Usage: scripts/bench_work_precision.py [structure|fluid] [--plot]   (--plot redraws the PNG from the CSV)"""
+  poiseuille: Hagen-Poiseuille flow in the rigid tube #1 (tube1_L0-L2; make-meshes makes L2),
+             FGMRES to rtol 1e-8 -> bench/results/work_precision_poiseuille.*
+Usage: scripts/bench_work_precision.py [structure|fluid|poiseuille] [--plot]   (--plot redraws the PNG from the CSV)"""
 import csv
 import json
 import os
+import subprocess
 import sys
 import tempfile
 
@@ -45,6 +48,16 @@ FAMILIES = {
             "the same, mesh moving (4 BDF2 steps)": [f"{ALE} -refine {k} -dt 0.25 -t_final 1 -geometry_ramp 1" for k in range(3)],
         },
     },
+    "poiseuille": {
+        "out": "work_precision_poiseuille", "unknowns": ("fluid", "pressure"), "solver": "-ksp_rtol 1e-8",
+        "pcs": {
+            "fieldsplit: Schur selfp, BoomerAMG": "",
+            "MUMPS (direct)": "-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps",
+        },
+        "scenes": {
+            "Poiseuille, rigid tube #1": [f"-options_file {top}/scenes/fluid_poiseuille.opts -mesh {top}/meshes/tube1_L{k}.msh" for k in range(3)],
+        },
+    },
 }
 FAMILY = next((a for a in sys.argv[1:] if a in FAMILIES), "structure")
 PCS, SCENES = FAMILIES[FAMILY]["pcs"], FAMILIES[FAMILY]["scenes"]
@@ -58,6 +71,8 @@ def main():
         return
     rows, cmds = [], []
     report = os.path.join(tempfile.mkdtemp(), "r.json")
+    if FAMILY == "poiseuille" and not os.path.exists(f"{top}/meshes/tube1_L2.msh"):
+        subprocess.run([f"{top}/scripts/make-meshes", "tube1", "2"], check=True)
     for scene, levels in SCENES.items():
         for level, sopts in enumerate(levels):
             for pc, popts in PCS.items():
@@ -83,8 +98,8 @@ def plot(rows):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, len(SCENES), figsize=(11, 4.2))
-    for ax, scene in zip(axes, SCENES):
+    fig, axes = plt.subplots(1, len(SCENES), figsize=(5.5 * len(SCENES), 4.2), squeeze=False)
+    for ax, scene in zip(axes[0], SCENES):
         for pc in PCS:
             pts = sorted((int(r["dofs"]), float(r["seconds"]), float(r["l2_relative"])) for r in rows if r["scene"] == scene and r["preconditioner"] == pc)
             if pts:  # joined in the order of the mesh levels

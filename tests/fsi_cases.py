@@ -425,6 +425,23 @@ def ale(*opts, np=1):
 
 
 @case
+def fluid_inflow():
+    """A prescribed plug inflow u = (0, 0, 1) cm/s on tube #1's inlet, no-slip wall, stress-free
+    outlet, steady, 2 ranks: what enters leaves (the discrete divergence is orthogonal to the
+    constants, so to the solver's tolerance); the inflow is the plug over the inlet but the
+    no-slip rim (between 0.6 and 1 times pi R^2); the inlet cannot also take a pressure."""
+    base = [APP, "-physics", "fluid", "-mesh", os.path.join(MESHES, "tube1_L0.msh"), "-fluid_inflow_velocity", "0,0,1",
+            "-options_file", os.path.join(MESHES, "..", "scenes", "fluid_simple.opts"), "-ksp_rtol", 1e-10]
+    out = run(base, 2)
+    m = re.search(r"flux inlet (\S+) outlet (\S+)", out)
+    q_in, q_out = float(m.group(1)), float(m.group(2))
+    between(abs(q_in + q_out) / abs(q_in), 0, 1e-6, "|inflow - outflow| / inflow")
+    between(-q_in / (3.141592653589793 * 0.15**2), 0.6, 1.0, "inflow / (pi R^2 U)")
+    out = run(base + ["-fluid_inlet_pressure", 100], 1, fail=True)
+    assert "-fluid_inflow_velocity: the inlet cannot also take -fluid_inlet_pressure" in out, out[-2000:]
+
+
+@case
 def fluid_ale_manufactured():
     """The manufactured Navier-Stokes flow (trigonometric, steady) on the unit cube whose mesh is
     displaced by the harmonic field a (x^2 - y^2, -2xy, 0), a = 0.1 (curved, isoparametric P2

@@ -54,9 +54,10 @@ std::vector<std::string> SplitList(const char *s)
   return out;
 }
 
-static PetscErrorCode Zero(PetscInt, PetscReal, const PetscReal[], PetscInt nc, PetscScalar *u, void *)
+/* u = the constant vector ctx (nullptr: zero) */
+static PetscErrorCode Constant(PetscInt, PetscReal, const PetscReal[], PetscInt nc, PetscScalar *u, void *ctx)
 {
-  for (PetscInt c = 0; c < nc; c++) u[c] = 0;
+  for (PetscInt c = 0; c < nc; c++) u[c] = ctx ? ((const PetscReal *)ctx)[c] : 0.0;
   return 0;
 }
 
@@ -79,7 +80,7 @@ PetscErrorCode LabelValues(DMLabel label, std::vector<PetscInt> &ids)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode AddZeroDirichlet(DM dm, const char *groups, PetscInt field, const char *option)
+PetscErrorCode AddDirichlet(DM dm, const char *groups, PetscInt field, const char *option, const PetscReal *value)
 {
   PetscFunctionBegin;
   for (const auto &spec : SplitList(groups)) {
@@ -94,7 +95,7 @@ PetscErrorCode AddZeroDirichlet(DM dm, const char *groups, PetscInt field, const
     std::vector<PetscInt> ids;
     PetscCall(DMGetLabel(dm, g.c_str(), &group));
     PetscCall(LabelValues(group, ids));
-    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, spec.c_str(), group, (PetscInt)ids.size(), ids.data(), field, (PetscInt)comps.size(), comps.empty() ? nullptr : comps.data(), (void (*)(void))Zero, nullptr, nullptr, nullptr));
+    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, spec.c_str(), group, (PetscInt)ids.size(), ids.data(), field, (PetscInt)comps.size(), comps.empty() ? nullptr : comps.data(), (void (*)(void))Constant, nullptr, (void *)value, nullptr));
   }
   PetscFunctionReturn(0);
 }

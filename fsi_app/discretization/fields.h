@@ -16,9 +16,10 @@ PetscErrorCode AddLagrangeField(DM dm, const std::string &name, const std::strin
    points of its label's stratum 1), made on the first call. */
 PetscErrorCode GetRegionLabel(DM dm, const std::string &region, DMLabel *label);
 
-/* Field `field` = 0 on the faces of each comma-separated group ("a,b:xz": only components x, z
-   on b); `option` names the option in error messages. */
-PetscErrorCode AddZeroDirichlet(DM dm, const char *groups, PetscInt field, const char *option);
+/* Field `field` = value (a constant vector that must outlive dm; nullptr: zero) on the faces
+   of each comma-separated group ("a,b:xz": only components x, z on b); `option` names the
+   option in error messages. */
+PetscErrorCode AddDirichlet(DM dm, const char *groups, PetscInt field, const char *option, const PetscReal *value = nullptr);
 
 /* The values of a label on every rank (a rank without points of it gets one, since
    DMAddBoundary is collective). */

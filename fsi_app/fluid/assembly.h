@@ -35,6 +35,7 @@ struct FluidBlock {
   P2Rule                     rule;               /* degree 5: the convective term exactly on a fixed mesh */
   FaceRule                   faceRule;
   std::vector<TractionGroup> tractions;
+  std::vector<CellFace>      inletFaces, outletFaces; /* for the fluxes a run reports (empty: no such group) */
   BodyForce                  force;
   PetscReal                  time    = 0; /* of the step being solved: tractions, body force */
   const TimeHistory         *history = nullptr;

@@ -28,7 +28,8 @@ static PetscErrorCode MMSDirichletFaces(const Scene &sc, DM dm, DMLabel *faces)
 PetscErrorCode FluidConditions(const Scene &sc, DM dm, PetscInt velocity, const FlowMMS &flow)
 {
   PetscFunctionBegin;
-  PetscCall(AddZeroDirichlet(dm, sc.noslip, velocity, "-fluid_noslip"));
+  if (sc.inflow) PetscCall(AddDirichlet(dm, sc.inlet, velocity, "-fluid_inlet", sc.inflowVelocity)); /* first: the no-slip rim wins */
+  PetscCall(AddDirichlet(dm, sc.noslip, velocity, "-fluid_noslip"));
   if (sc.mms) {
     DMLabel               faces;
     std::vector<PetscInt> ids;
@@ -60,6 +61,11 @@ PetscErrorCode SetUpFluid(const Scene &sc, DM dm, PetscInt velocity, PetscInt pr
     fb.tractions.push_back(tg);
     PetscFunctionReturn(0);
   };
+  for (auto g : {std::make_pair(sc.inlet, &fb.inletFaces), std::make_pair(sc.outlet, &fb.outletFaces)}) { /* the fluxes a run reports */
+    DMLabel label;
+    PetscCall(DMGetLabel(dm, g.first, &label));
+    if (label) PetscCall(CellFacesCreate(dm, fb.velocity, label, *g.second));
+  }
   if (sc.mms) {
     const FlowMMS *m = &flow;
     PetscCall(addTraction(sc.outlet, [m](const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal tr[3]) { FlowMMSTraction(*m, x, n, t, tr); }));

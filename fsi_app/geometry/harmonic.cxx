@@ -61,7 +61,7 @@ PetscErrorCode GeometryConditions(const Scene &sc, DM dm, PetscInt field, const 
   PetscCall(DMGetLabel(dm, sc.interface, &interface));
   PetscCall(LabelValues(interface, ids));
   PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, "interface displacement", interface, (PetscInt)ids.size(), ids.data(), field, 0, nullptr, (void (*)(void))PrescribedDisplacementBC, nullptr, (void *)&motion, nullptr));
-  PetscCall(AddZeroDirichlet(dm, sc.slip, field, "-geometry_slip"));
+  PetscCall(AddDirichlet(dm, sc.slip, field, "-geometry_slip"));
   PetscFunctionReturn(0);
 }
 

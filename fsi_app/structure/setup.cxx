@@ -13,7 +13,7 @@ PetscErrorCode StructureConditions(const Scene &sc, DM dm, PetscInt field)
     PetscCall(DMGetLabel(dm, "boundary", &boundary));
     PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, "boundary", boundary, 1, &one, field, 0, nullptr, (void (*)(void))MMSElasticityExact, nullptr, (void *)&sc.mmsAmplitude, nullptr));
   }
-  PetscCall(AddZeroDirichlet(dm, sc.clamp, field, "-structure_clamp"));
+  PetscCall(AddDirichlet(dm, sc.clamp, field, "-structure_clamp"));
   PetscFunctionReturn(0);
 }
 
