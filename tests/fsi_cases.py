@@ -506,6 +506,27 @@ def fluid_ale_geometric_conservation():
 
 
 @case
+def fluid_ale_restart():
+    """The unsteady manufactured flow on the moving mesh (BDF2, 6 steps), stopped after 4 and
+    restarted from its checkpoint (velocity, pressure, mesh displacement and their past states):
+    the same Newton and Krylov counts in the last two steps and the same final state (largest
+    velocity, largest mesh displacement, velocity error) to round-off."""
+    tmp = tempfile.mkdtemp()
+    f = lambda name: os.path.join(tmp, name)
+    base = [APP] + ALE_CUBE + ["-dt", 1 / 6, "-geometry_ramp", 1, "-mms_ramp", 1]
+    run(base + ["-t_final", 1, "-report", f("full.json")])
+    run(base + ["-t_final", 4 / 6, "-checkpoint", f("c.chk"), "-checkpoint_every", 4])
+    run(base + ["-t_final", 1, "-restart", f("c.chk"), "-report", f("resumed.json")])
+    full, resumed = report(f("full.json")), report(f("resumed.json"))
+    assert resumed["restarted_at_step"] == 4 and [s["step"] for s in resumed["steps"]] == [5, 6], resumed
+    for a, b in zip(full["steps"][4:], resumed["steps"]):
+        assert (a["newton"], a["krylov"]) == (b["newton"], b["krylov"]), (a, b)
+    for key in ("max_velocity", "max_mesh_displacement", "l2_error"):
+        between(abs(full["results"][key] - resumed["results"][key]) / full["results"][key], 0, 1e-10, f"restarted / uninterrupted {key}")
+    shutil.rmtree(tmp)
+
+
+@case
 def fluid_ale_inverted_mesh():
     """A prescribed interface displacement too large for its harmonic extension (a = 0.5: J < 0
     near the corner x = y = 1) stops, on 2 ranks, with a sentence naming the option, a nonzero
