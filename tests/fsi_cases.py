@@ -331,7 +331,7 @@ def structure_arterial():
 
 def flow(*opts, np=1):
     out = run([APP] + [str(o) for o in opts], np)
-    r = {"unknowns": dict(re.findall(r"(\w+) (\d+)", re.search(r"unknowns: (.*)", out).group(1)))}
+    r = {"unknowns": dict(re.findall(r"(\w+) (\d+)", re.search(r"unknowns: (.*)", out).group(1))), "out": out}
     m = re.search(r"newton (\d+) krylov (\d+) reason (\w+)", out)
     r.update(newton=int(m.group(1)), krylov=int(m.group(2)), reason=m.group(3))
     f = re.search(r"flux (\S+) exact (\S+) relative error (\S+)", out)
@@ -351,7 +351,7 @@ def fluid_poiseuille():
     """Hagen-Poiseuille flow in the rigid fluid region of tube #1: a fluid-only scene allocates
     no structure, geometry or multiplier unknowns; Newton (exact Jacobian, convection included)
     converges quadratically; FGMRES with the fieldsplit Schur preconditioner of
-    scenes/fluid_simple.opts gives MUMPS's solution; the flux and velocity errors against the
+    scenes/fluid_schur.opts, and SIMPLE (scenes/fluid_simple.opts), give MUMPS's solution; the flux and velocity errors against the
     exact flow fall at rate 2 from tube1_L0 to tube1_L1 (the straight-sided tetrahedra's
     polygonal cross-section: the discretisation itself is exact for the quadratic profile only
     on an exact geometry); 2 ranks give the flux of 1."""
@@ -364,6 +364,10 @@ def fluid_poiseuille():
     between(r[0]["krylov"] / r[0]["newton"], 5, 40, "FGMRES iterations per Newton step, fieldsplit Schur selfp + BoomerAMG")
     direct = flow(*POISEUILLE, "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps")
     between(abs(direct["flux"] / r[0]["flux"] - 1), 0, 1e-6, "fieldsplit / MUMPS flux")
+    simple = flow(*POISEUILLE, "-options_file", os.path.join(MESHES, "..", "scenes", "fluid_simple.opts"), "-ksp_view")
+    between(abs(direct["flux"] / simple["flux"] - 1), 0, 1e-6, "SIMPLE / MUMPS flux")
+    between(simple["krylov"] / simple["newton"], 5, 60, "FGMRES iterations per Newton step, SIMPLE")
+    assert re.search(r"KSP solver for upper A00 in upper triangular factor\s+KSP Object: \(fieldsplit_pressure_upper_\).*?type: jacobi", simple["out"], re.S), "SIMPLE's diag(F)^-1"
     for key in ("flux_error", "l2_relative"):
         between(rates([x[key] for x in r])[0], 1.8, 2.4, f"{key} rate L0 -> L1")
     assert r[1]["flux_error"] < 0.035, r[1]
@@ -431,7 +435,7 @@ def fluid_inflow():
     constants, so to the solver's tolerance); the inflow is the plug over the inlet but the
     no-slip rim (between 0.6 and 1 times pi R^2); the inlet cannot also take a pressure."""
     base = [APP, "-physics", "fluid", "-mesh", os.path.join(MESHES, "tube1_L0.msh"), "-fluid_inflow_velocity", "0,0,1",
-            "-options_file", os.path.join(MESHES, "..", "scenes", "fluid_simple.opts"), "-ksp_rtol", 1e-10]
+            "-options_file", os.path.join(MESHES, "..", "scenes", "fluid_schur.opts"), "-ksp_rtol", 1e-10]
     out = run(base, 2)
     m = re.search(r"flux inlet (\S+) outlet (\S+)", out)
     q_in, q_out = float(m.group(1)), float(m.group(2))
