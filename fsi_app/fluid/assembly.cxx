@@ -181,13 +181,18 @@ PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P)
       if (MovePoint(g, fb.mesh ? s.d : nullptr, l, N, m) <= 0) continue; /* the residual reported it */
       Evaluate(s, N, l, m, p);
       const PetscReal w = fb.rule.w[q] * g.detE * m.J;
+      PetscReal cGradN[10]; /* (u - w) . grad N_b */
+      for (int b = 0; b < 10; b++) cGradN[b] = (p.u[0] - p.w[0]) * m.dN[b][0] + (p.u[1] - p.w[1]) * m.dN[b][1] + (p.u[2] - p.w[2]) * m.dN[b][2];
+      /* K_(ai)(bk) = delta_ik [N_a (mass N_b + rho (u - w).grad N_b) + mu grad N_a . grad N_b] + rho N_a N_b du_i/dx_k + mu dN_b/dx_i dN_a/dx_k */
       for (int a = 0; a < 10; a++)
         for (int b = 0; b < 10; b++) {
-          const PetscReal cGradNb = (p.u[0] - p.w[0]) * m.dN[b][0] + (p.u[1] - p.w[1]) * m.dN[b][1] + (p.u[2] - p.w[2]) * m.dN[b][2];
-          const PetscReal gg      = m.dN[a][0] * m.dN[b][0] + m.dN[a][1] * m.dN[b][1] + m.dN[a][2] * m.dN[b][2];
-          for (int i = 0; i < 3; i++)
-            for (int kk = 0; kk < 3; kk++) /* N_a (mass N_b delta_ik + rho (N_b du_i/dx_k + delta_ik (u - w).grad N_b)) + mu (delta_ik grad N_a.grad N_b + dN_b/dx_i dN_a/dx_k) */
-              K[(3 * a + i) * n + 3 * b + kk] += w * (N[a] * ((i == kk) * (mass * N[b] + fb.rho * cGradNb) + fb.rho * N[b] * p.G[i][kk]) + fb.mu * ((i == kk) * gg + m.dN[b][i] * m.dN[a][kk]));
+          const PetscReal gg   = m.dN[a][0] * m.dN[b][0] + m.dN[a][1] * m.dN[b][1] + m.dN[a][2] * m.dN[b][2];
+          const PetscReal diag = w * (N[a] * (mass * N[b] + fb.rho * cGradN[b]) + fb.mu * gg), nn = w * fb.rho * N[a] * N[b], wmu = w * fb.mu;
+          PetscReal      *Kab  = &K[3 * a * n + 3 * b];
+          for (int i = 0; i < 3; i++) {
+            for (int kk = 0; kk < 3; kk++) Kab[i * n + kk] += nn * p.G[i][kk] + wmu * m.dN[b][i] * m.dN[a][kk];
+            Kab[i * n + i] += diag;
+          }
         }
       for (int a = 0; a < 10; a++)
         for (int i = 0; i < 3; i++)
