@@ -191,19 +191,25 @@ static PetscErrorCode Extend(PC pc, Subdomain &s, MatReuse reuse)
   PetscFunctionReturn(0);
 }
 
-/* Insert every subdomain's rows of Phi: its interior rows, and the interface rows of the nodes
-   whose sharing set it leads, so that each row is set exactly once. */
-static PetscErrorCode InsertPhi(PC pc, Mat P)
+/* Every subdomain's entries of Phi: its interior rows, and the interface rows of the nodes
+   whose sharing set it leads, so that each entry is given exactly once. With rows and cols
+   null only the values are gathered, in the order of the first call: Phi_Gamma does not
+   depend on A, so its zero pattern does not change when A does. */
+static PetscErrorCode GatherPhi(PC pc, std::vector<PetscInt> *rows, std::vector<PetscInt> *cols, std::vector<PetscScalar> &vals)
 {
   PC_GDSW       *gd = (PC_GDSW *)pc->data;
   const PetscInt bs = gd->bs;
 
   PetscFunctionBegin;
+  auto add = [&](PetscInt i, PetscInt j, PetscScalar v) {
+    if (rows) rows->push_back(i), cols->push_back(j);
+    vals.push_back(v);
+  };
   for (auto &s : *gd->sub) {
-    std::vector<PetscInt> cols;
+    std::vector<PetscInt> c;
     for (auto &g : s.groups)
-      for (PetscInt j = 0; j < g.ncols; j++) cols.push_back(g.col0 + j);
-    const PetscInt ncols = (PetscInt)cols.size();
+      for (PetscInt j = 0; j < g.ncols; j++) c.push_back(g.col0 + j);
+    const PetscInt ncols = (PetscInt)c.size();
     if (!ncols) continue;
     PetscInt        nI, nG;
     const PetscInt *I, *G;
@@ -211,35 +217,54 @@ static PetscErrorCode InsertPhi(PC pc, Mat P)
     PetscCall(ISGetLocalSize(s.isG, &nG));
     PetscCall(ISGetIndices(s.isI, &I));
     PetscCall(ISGetIndices(s.isG, &G));
-    std::vector<PetscScalar> row(ncols);
     if (nI) {
       const PetscScalar *x;
       PetscCall(MatDenseGetArrayRead(s.PhiI, &x));
       for (PetscInt r = 0; r < nI; r++) {
         const PetscInt grow = s.nodes[I[r] / bs] * bs + I[r] % bs;
-        for (PetscInt j = 0; j < ncols; j++) row[j] = x[j * nI + r];
-        PetscCall(MatSetValues(P, 1, &grow, ncols, cols.data(), row.data(), INSERT_VALUES));
+        for (PetscInt j = 0; j < ncols; j++) add(grow, c[j], x[j * nI + r]);
       }
       PetscCall(MatDenseRestoreArrayRead(s.PhiI, &x));
     }
     const PetscScalar *y;
     PetscCall(MatDenseGetArrayRead(s.PhiG, &y));
-    std::vector<PetscInt> nzCols;
     for (PetscInt r = 0; r < nG; r++) {
       const PetscInt a = G[r] / bs;
       if ((*gd->sets)[s.setOf[a]][0] != s.gid) continue;
       const PetscInt grow = s.nodes[a] * bs + G[r] % bs;
-      nzCols.clear();
       for (PetscInt j = 0; j < ncols; j++)
-        if (y[j * nG + r] != 0.0) row[nzCols.size()] = y[j * nG + r], nzCols.push_back(cols[j]);
-      PetscCall(MatSetValues(P, 1, &grow, (PetscInt)nzCols.size(), nzCols.data(), row.data(), INSERT_VALUES));
+        if (y[j * nG + r] != 0.0) add(grow, c[j], y[j * nG + r]);
     }
     PetscCall(MatDenseRestoreArrayRead(s.PhiG, &y));
     PetscCall(ISRestoreIndices(s.isI, &I));
     PetscCall(ISRestoreIndices(s.isG, &G));
   }
-  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+/* Phi (before dropping zero columns) from the subdomains' dense blocks: the pattern once by
+   COO preallocation (which also routes the interface rows of other ranks' nodes), then values. */
+static PetscErrorCode AssemblePhi(PC pc, PetscInt ncolsLocal, MatReuse reuse)
+{
+  PC_GDSW                 *gd = (PC_GDSW *)pc->data;
+  std::vector<PetscScalar> vals;
+
+  PetscFunctionBegin;
+  if (reuse == MAT_INITIAL_MATRIX) {
+    std::vector<PetscInt> rows, cols;
+    PetscInt              m, M, N;
+    MPI_Comm              comm;
+    PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
+    PetscCall(GatherPhi(pc, &rows, &cols, vals));
+    PetscCall(MatGetLocalSize(gd->A, &m, nullptr));
+    PetscCall(MatGetSize(gd->A, &M, nullptr));
+    PetscCallMPI(MPIU_Allreduce(&ncolsLocal, &N, 1, MPIU_INT, MPI_SUM, comm));
+    PetscCall(MatCreate(comm, &gd->PhiFull));
+    PetscCall(MatSetType(gd->PhiFull, MATAIJ));
+    PetscCall(MatSetSizes(gd->PhiFull, m, ncolsLocal, M, N));
+    PetscCall(MatSetPreallocationCOO(gd->PhiFull, (PetscCount)vals.size(), rows.data(), cols.data()));
+  } else PetscCall(GatherPhi(pc, nullptr, nullptr, vals));
+  PetscCall(MatSetValuesCOO(gd->PhiFull, vals.data(), INSERT_VALUES));
   PetscFunctionReturn(0);
 }
 
@@ -288,12 +313,9 @@ static PetscErrorCode DropZeroColumns(PC pc, MatReuse reuse)
 PetscErrorCode GDSWBuildCoarseBasis(PC pc)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
-  PetscInt m, M, N, n;
-  Mat      pre;
-  MPI_Comm comm;
+  PetscInt n;
 
   PetscFunctionBegin;
-  PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
   PetscCall(PetscLogEventBegin(GDSW_Basis, pc, 0, 0, 0));
   for (auto &s : *gd->sub)
     for (auto &g : s.groups) GroupValues(gd, s, g);
@@ -303,20 +325,7 @@ PetscErrorCode GDSWBuildCoarseBasis(PC pc)
 
   PetscCall(PetscLogEventBegin(GDSW_Extension, pc, 0, 0, 0));
   for (auto &s : *gd->sub) PetscCall(Extend(pc, s, MAT_INITIAL_MATRIX));
-  PetscCall(MatGetLocalSize(gd->A, &m, nullptr));
-  PetscCall(MatGetSize(gd->A, &M, nullptr));
-  PetscCallMPI(MPIU_Allreduce(&n, &N, 1, MPIU_INT, MPI_SUM, comm));
-  PetscCall(MatCreate(comm, &pre));
-  PetscCall(MatSetType(pre, MATPREALLOCATOR));
-  PetscCall(MatSetSizes(pre, m, n, M, N));
-  PetscCall(MatSetUp(pre));
-  PetscCall(InsertPhi(pc, pre));
-  PetscCall(MatCreate(comm, &gd->PhiFull));
-  PetscCall(MatSetType(gd->PhiFull, MATAIJ));
-  PetscCall(MatSetSizes(gd->PhiFull, m, n, M, N));
-  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, gd->PhiFull));
-  PetscCall(MatDestroy(&pre));
-  PetscCall(InsertPhi(pc, gd->PhiFull));
+  PetscCall(AssemblePhi(pc, n, MAT_INITIAL_MATRIX));
   PetscCall(DropZeroColumns(pc, MAT_INITIAL_MATRIX));
   PetscCall(MatGetSize(gd->Phi, nullptr, &gd->coarseDim));
   PetscCall(PetscLogEventEnd(GDSW_Extension, pc, 0, 0, 0));
@@ -331,8 +340,7 @@ PetscErrorCode GDSWUpdateCoarseBasis(PC pc)
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(GDSW_Extension, pc, 0, 0, 0));
   for (auto &s : *gd->sub) PetscCall(Extend(pc, s, MAT_REUSE_MATRIX));
-  PetscCall(MatZeroEntries(gd->PhiFull));
-  PetscCall(InsertPhi(pc, gd->PhiFull));
+  PetscCall(AssemblePhi(pc, 0, MAT_REUSE_MATRIX));
   PetscCall(DropZeroColumns(pc, MAT_REUSE_MATRIX));
   PetscCall(PetscLogEventEnd(GDSW_Extension, pc, 0, 0, 0));
   PetscFunctionReturn(0);

@@ -52,19 +52,31 @@ static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, std:
   PetscCall(MatDenseGetArrayRead(s.PhiG, &phiG));
   PetscCall(MatGetRowIJ(s.Anon, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
   PetscCall(MatSeqAIJGetArrayRead(s.Anon, &va));
-  std::vector<PetscScalar> C(nG * ncols, 0.0); /* column-major nG x ncols */
+  /* the couplings of each Gamma row that enter C, as (value, row of Phi_I or Phi_Gamma) */
+  std::vector<PetscInt>    ptr(nG + 1, 0), src;
+  std::vector<PetscScalar> val;
+  std::vector<char>        interior;
   for (PetscInt r = 0; r < nG; r++) {
     const PetscInt row = G[r];
     const auto    &Sr  = (*gd->sets)[s.setOf[row / bs]];
     for (PetscInt k = ia[row]; k < ia[row + 1]; k++) {
       const PetscInt w = where[ja[k]];
-      if (w >= 0) {
-        for (PetscInt j = 0; j < ncols; j++) C[j * nG + r] += va[k] * phiI[j * nI + w];
-      } else if (w <= -2 && FirstCommon(Sr, (*gd->sets)[s.setOf[ja[k] / bs]]) == s.gid) {
-        for (PetscInt j = 0; j < ncols; j++) C[j * nG + r] += va[k] * phiG[j * nG + (-w - 2)];
-      }
+      if (w >= 0) val.push_back(va[k]), src.push_back(w), interior.push_back(1);
+      else if (w <= -2 && FirstCommon(Sr, (*gd->sets)[s.setOf[ja[k] / bs]]) == s.gid) val.push_back(va[k]), src.push_back(-w - 2), interior.push_back(0);
+    }
+    ptr[r + 1] = (PetscInt)val.size();
+  }
+  std::vector<PetscScalar> C(nG * ncols, 0.0); /* column-major nG x ncols */
+  for (PetscInt j = 0; j < ncols; j++) {      /* a column at a time: Phi's columns are contiguous */
+    const PetscScalar *xI = phiI ? phiI + j * nI : nullptr, *xG = phiG + j * nG;
+    PetscScalar       *c  = &C[j * nG];
+    for (PetscInt r = 0; r < nG; r++) {
+      PetscScalar sum = 0;
+      for (PetscInt k = ptr[r]; k < ptr[r + 1]; k++) sum += val[k] * (interior[k] ? xI[src[k]] : xG[src[k]]);
+      c[r] = sum;
     }
   }
+  PetscCall(PetscLogFlops(2.0 * ptr[nG] * ncols));
   PetscCall(MatSeqAIJRestoreArrayRead(s.Anon, &va));
   PetscCall(MatRestoreRowIJ(s.Anon, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
   block.assign(ncols * ncols, 0.0);
@@ -97,17 +109,31 @@ static PetscBool ExactExtension(const PC_GDSW *gd)
   return PETSC_TRUE; /* no interior anywhere on this rank */
 }
 
-static PetscErrorCode AssembleLocal(PC pc, Mat A0)
+/* Every subdomain's dense block, computed once for both the preallocation and the values. */
+static PetscErrorCode LocalBlocks(PC pc, std::vector<std::vector<PetscScalar>> &blocks)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
 
   PetscFunctionBegin;
-  for (auto &s : *gd->sub) {
-    const std::vector<PetscInt> cols = Columns(s);
+  blocks.resize(gd->sub->size());
+  for (size_t i = 0; i < gd->sub->size(); i++) {
+    const Subdomain &s = (*gd->sub)[i];
+    PetscInt         ncols = 0;
+    for (const auto &g : s.groups) ncols += g.ncols;
+    if (ncols) PetscCall(LocalBlock(pc, s, ncols, blocks[i]));
+  }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode AssembleLocal(PC pc, const std::vector<std::vector<PetscScalar>> &blocks, Mat A0)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  for (size_t i = 0; i < gd->sub->size(); i++) {
+    const std::vector<PetscInt> cols = Columns((*gd->sub)[i]);
     if (cols.empty()) continue;
-    std::vector<PetscScalar> block;
-    PetscCall(LocalBlock(pc, s, (PetscInt)cols.size(), block));
-    PetscCall(MatSetValues(A0, (PetscInt)cols.size(), cols.data(), (PetscInt)cols.size(), cols.data(), block.data(), ADD_VALUES));
+    PetscCall(MatSetValues(A0, (PetscInt)cols.size(), cols.data(), (PetscInt)cols.size(), cols.data(), blocks[i].data(), ADD_VALUES));
   }
   PetscCall(MatAssemblyBegin(A0, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(A0, MAT_FINAL_ASSEMBLY));
@@ -128,6 +154,8 @@ PetscErrorCode GDSWAssembleCoarseOperator(PC pc, PetscBool basisCurrent)
     PetscCall(MatPtAP(gd->A, gd->Phi, gd->A0 ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, 2.0, &gd->A0));
     PetscFunctionReturn(0);
   }
+  std::vector<std::vector<PetscScalar>> blocks;
+  PetscCall(LocalBlocks(pc, blocks));
   if (!gd->A0) {
     PetscInt n, N;
     Mat      pre;
@@ -137,7 +165,7 @@ PetscErrorCode GDSWAssembleCoarseOperator(PC pc, PetscBool basisCurrent)
     PetscCall(MatSetType(pre, MATPREALLOCATOR));
     PetscCall(MatSetSizes(pre, n, n, N, N));
     PetscCall(MatSetUp(pre));
-    PetscCall(AssembleLocal(pc, pre));
+    PetscCall(AssembleLocal(pc, blocks, pre));
     PetscCall(MatCreate(PetscObjectComm((PetscObject)pc), &gd->A0));
     PetscCall(MatSetType(gd->A0, MATAIJ));
     PetscCall(MatSetSizes(gd->A0, n, n, N, N));
@@ -145,6 +173,6 @@ PetscErrorCode GDSWAssembleCoarseOperator(PC pc, PetscBool basisCurrent)
     PetscCall(MatDestroy(&pre));
     PetscCall(MatSetOption(gd->A0, MAT_ROW_ORIENTED, PETSC_FALSE)); /* the blocks are column-major */
   } else PetscCall(MatZeroEntries(gd->A0));
-  PetscCall(AssembleLocal(pc, gd->A0));
+  PetscCall(AssembleLocal(pc, blocks, gd->A0));
   PetscFunctionReturn(0);
 }
