@@ -301,7 +301,7 @@ def structure_output():
     assert "/mesh/topology           Dataset {2089, 10}" in listing and "/mesh/coordinates        Dataset {4240, 3}" in listing, listing
     assert len(re.findall(r"/fields/displacement_\d+ +Dataset \{4240, 3\}", listing)) == 4, listing
     png = os.path.join(tmp, "wall.png")
-    for attempt in range(2):  # xvfb-run -a can lose the race for a display number to another X client
+    for attempt in range(3):  # xvfb-run -a can lose the race for a display number to another X client
         out = subprocess_out(["xvfb-run", "-a", "-e", "/dev/stdout", "pvbatch", os.path.join(MESHES, "..", "scripts", "render_xdmf.py"), xdmf, png, 50])
         print(out[-2000:])
         if "frames" in out and os.path.exists(png):

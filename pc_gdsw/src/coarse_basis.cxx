@@ -191,25 +191,32 @@ static PetscErrorCode Extend(PC pc, Subdomain &s, MatReuse reuse)
   PetscFunctionReturn(0);
 }
 
-/* Every subdomain's entries of Phi: its interior rows, and the interface rows of the nodes
-   whose sharing set it leads, so that each entry is given exactly once. With rows and cols
-   null only the values are gathered, in the order of the first call: Phi_Gamma does not
-   depend on A, so its zero pattern does not change when A does. */
-static PetscErrorCode GatherPhi(PC pc, std::vector<PetscInt> *rows, std::vector<PetscInt> *cols, std::vector<PetscScalar> &vals)
+/* A subdomain's columns of Phi, sorted, and where each sits in its dense blocks. */
+static void SortedColumns(const Subdomain &s, std::vector<PetscInt> &cols, std::vector<PetscInt> &pos)
+{
+  cols.clear();
+  for (auto &g : s.groups)
+    for (PetscInt j = 0; j < g.ncols; j++) cols.push_back(g.col0 + j);
+  pos.resize(cols.size());
+  for (size_t j = 0; j < pos.size(); j++) pos[j] = (PetscInt)j;
+  std::sort(pos.begin(), pos.end(), [&](PetscInt a, PetscInt b) { return cols[a] < cols[b]; });
+  std::sort(cols.begin(), cols.end());
+}
+
+/* Phi's rows, each set by exactly one subdomain: its interior rows (dense over its columns) and
+   the interface rows of the nodes whose sharing set it leads (over their nonzero columns; Phi_Gamma
+   does not depend on A, so neither does this pattern). With count, only the interface rows'
+   lengths are recorded, per leaf of the node star forest. */
+static PetscErrorCode InsertPhi(PC pc, Mat P, std::vector<PetscInt> *count)
 {
   PC_GDSW       *gd = (PC_GDSW *)pc->data;
   const PetscInt bs = gd->bs;
 
   PetscFunctionBegin;
-  auto add = [&](PetscInt i, PetscInt j, PetscScalar v) {
-    if (rows) rows->push_back(i), cols->push_back(j);
-    vals.push_back(v);
-  };
   for (auto &s : *gd->sub) {
-    std::vector<PetscInt> c;
-    for (auto &g : s.groups)
-      for (PetscInt j = 0; j < g.ncols; j++) c.push_back(g.col0 + j);
-    const PetscInt ncols = (PetscInt)c.size();
+    std::vector<PetscInt> cols, pos, nzCols;
+    SortedColumns(s, cols, pos);
+    const PetscInt ncols = (PetscInt)cols.size();
     if (!ncols) continue;
     PetscInt        nI, nG;
     const PetscInt *I, *G;
@@ -217,12 +224,14 @@ static PetscErrorCode GatherPhi(PC pc, std::vector<PetscInt> *rows, std::vector<
     PetscCall(ISGetLocalSize(s.isG, &nG));
     PetscCall(ISGetIndices(s.isI, &I));
     PetscCall(ISGetIndices(s.isG, &G));
-    if (nI) {
+    std::vector<PetscScalar> row(ncols);
+    if (nI && !count) {
       const PetscScalar *x;
       PetscCall(MatDenseGetArrayRead(s.PhiI, &x));
       for (PetscInt r = 0; r < nI; r++) {
         const PetscInt grow = s.nodes[I[r] / bs] * bs + I[r] % bs;
-        for (PetscInt j = 0; j < ncols; j++) add(grow, c[j], x[j * nI + r]);
+        for (PetscInt j = 0; j < ncols; j++) row[j] = x[pos[j] * nI + r];
+        PetscCall(MatSetValues(P, 1, &grow, ncols, cols.data(), row.data(), INSERT_VALUES));
       }
       PetscCall(MatDenseRestoreArrayRead(s.PhiI, &x));
     }
@@ -231,40 +240,61 @@ static PetscErrorCode GatherPhi(PC pc, std::vector<PetscInt> *rows, std::vector<
     for (PetscInt r = 0; r < nG; r++) {
       const PetscInt a = G[r] / bs;
       if ((*gd->sets)[s.setOf[a]][0] != s.gid) continue;
-      const PetscInt grow = s.nodes[a] * bs + G[r] % bs;
+      nzCols.clear();
       for (PetscInt j = 0; j < ncols; j++)
-        if (y[j * nG + r] != 0.0) add(grow, c[j], y[j * nG + r]);
+        if (y[pos[j] * nG + r] != 0.0) row[nzCols.size()] = y[pos[j] * nG + r], nzCols.push_back(cols[j]);
+      const PetscInt grow = s.nodes[a] * bs + G[r] % bs, nnz = (PetscInt)nzCols.size();
+      if (count) (*count)[s.leaf0 + a] = std::max((*count)[s.leaf0 + a], nnz);
+      else PetscCall(MatSetValues(P, 1, &grow, nnz, nzCols.data(), row.data(), INSERT_VALUES));
     }
     PetscCall(MatDenseRestoreArrayRead(s.PhiG, &y));
     PetscCall(ISRestoreIndices(s.isI, &I));
     PetscCall(ISRestoreIndices(s.isG, &G));
   }
+  if (!count) {
+    PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+  }
   PetscFunctionReturn(0);
 }
 
-/* Phi (before dropping zero columns) from the subdomains' dense blocks: the pattern once by
-   COO preallocation (which also routes the interface rows of other ranks' nodes), then values. */
-static PetscErrorCode AssemblePhi(PC pc, PetscInt ncolsLocal, MatReuse reuse)
+/* Exact row lengths of Phi: interior rows are owned here and dense over their subdomain's
+   columns; an interface row may be set by a subdomain of another rank, so its length (the
+   longest of its node's rows) travels to the node's owner along the node star forest. */
+static PetscErrorCode PreallocatePhi(PC pc, Mat P, PetscInt ncolsLocal)
 {
-  PC_GDSW                 *gd = (PC_GDSW *)pc->data;
-  std::vector<PetscScalar> vals;
+  PC_GDSW       *gd = (PC_GDSW *)pc->data;
+  const PetscInt bs = gd->bs;
+  PetscInt       rstart, rend, cend, nroots, nleaves;
 
   PetscFunctionBegin;
-  if (reuse == MAT_INITIAL_MATRIX) {
-    std::vector<PetscInt> rows, cols;
-    PetscInt              m, M, N;
-    MPI_Comm              comm;
-    PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
-    PetscCall(GatherPhi(pc, &rows, &cols, vals));
-    PetscCall(MatGetLocalSize(gd->A, &m, nullptr));
-    PetscCall(MatGetSize(gd->A, &M, nullptr));
-    PetscCallMPI(MPIU_Allreduce(&ncolsLocal, &N, 1, MPIU_INT, MPI_SUM, comm));
-    PetscCall(MatCreate(comm, &gd->PhiFull));
-    PetscCall(MatSetType(gd->PhiFull, MATAIJ));
-    PetscCall(MatSetSizes(gd->PhiFull, m, ncolsLocal, M, N));
-    PetscCall(MatSetPreallocationCOO(gd->PhiFull, (PetscCount)vals.size(), rows.data(), cols.data()));
-  } else PetscCall(GatherPhi(pc, nullptr, nullptr, vals));
-  PetscCall(MatSetValuesCOO(gd->PhiFull, vals.data(), INSERT_VALUES));
+  PetscCall(MatGetOwnershipRange(gd->A, &rstart, &rend));
+  PetscCallMPI(MPI_Scan(&ncolsLocal, &cend, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)pc)));
+  const PetscInt cstart = cend - ncolsLocal;
+  PetscCall(PetscSFGetGraph(gd->nodeSF, &nroots, &nleaves, nullptr, nullptr));
+  std::vector<PetscInt> leafCount(nleaves, 0), nodeCount(nroots, 0), dnz(rend - rstart, 0), onz(rend - rstart, 0);
+  PetscCall(InsertPhi(pc, P, &leafCount));
+  PetscCall(PetscSFReduceBegin(gd->nodeSF, MPIU_INT, leafCount.data(), nodeCount.data(), MPI_MAX));
+  PetscCall(PetscSFReduceEnd(gd->nodeSF, MPIU_INT, leafCount.data(), nodeCount.data(), MPI_MAX));
+  for (PetscInt a = 0; a < nroots; a++)
+    for (PetscInt c = 0; c < bs; c++) {
+      dnz[a * bs + c] = std::min(nodeCount[a], ncolsLocal);
+      onz[a * bs + c] = nodeCount[a];
+    }
+  for (auto &s : *gd->sub) {
+    PetscInt ndiag = 0, ncols = 0, nI;
+    for (auto &g : s.groups)
+      for (PetscInt j = 0; j < g.ncols; j++, ncols++) ndiag += (g.col0 + j >= cstart && g.col0 + j < cend);
+    const PetscInt *I;
+    PetscCall(ISGetLocalSize(s.isI, &nI));
+    PetscCall(ISGetIndices(s.isI, &I));
+    for (PetscInt r = 0; r < nI; r++) {
+      const PetscInt lrow = s.nodes[I[r] / bs] * bs + I[r] % bs - rstart;
+      dnz[lrow] = ndiag, onz[lrow] = ncols - ndiag;
+    }
+    PetscCall(ISRestoreIndices(s.isI, &I));
+  }
+  PetscCall(MatXAIJSetPreallocation(P, 1, dnz.data(), onz.data(), nullptr, nullptr));
   PetscFunctionReturn(0);
 }
 
@@ -313,7 +343,7 @@ static PetscErrorCode DropZeroColumns(PC pc, MatReuse reuse)
 PetscErrorCode GDSWBuildCoarseBasis(PC pc)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
-  PetscInt n;
+  PetscInt m, M, n, N;
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(GDSW_Basis, pc, 0, 0, 0));
@@ -325,7 +355,14 @@ PetscErrorCode GDSWBuildCoarseBasis(PC pc)
 
   PetscCall(PetscLogEventBegin(GDSW_Extension, pc, 0, 0, 0));
   for (auto &s : *gd->sub) PetscCall(Extend(pc, s, MAT_INITIAL_MATRIX));
-  PetscCall(AssemblePhi(pc, n, MAT_INITIAL_MATRIX));
+  PetscCall(MatGetLocalSize(gd->A, &m, nullptr));
+  PetscCall(MatGetSize(gd->A, &M, nullptr));
+  PetscCallMPI(MPIU_Allreduce(&n, &N, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)pc)));
+  PetscCall(MatCreate(PetscObjectComm((PetscObject)pc), &gd->PhiFull));
+  PetscCall(MatSetType(gd->PhiFull, MATAIJ));
+  PetscCall(MatSetSizes(gd->PhiFull, m, n, M, N));
+  PetscCall(PreallocatePhi(pc, gd->PhiFull, n));
+  PetscCall(InsertPhi(pc, gd->PhiFull, nullptr));
   PetscCall(DropZeroColumns(pc, MAT_INITIAL_MATRIX));
   PetscCall(MatGetSize(gd->Phi, nullptr, &gd->coarseDim));
   PetscCall(PetscLogEventEnd(GDSW_Extension, pc, 0, 0, 0));
@@ -340,7 +377,8 @@ PetscErrorCode GDSWUpdateCoarseBasis(PC pc)
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(GDSW_Extension, pc, 0, 0, 0));
   for (auto &s : *gd->sub) PetscCall(Extend(pc, s, MAT_REUSE_MATRIX));
-  PetscCall(AssemblePhi(pc, 0, MAT_REUSE_MATRIX));
+  PetscCall(MatZeroEntries(gd->PhiFull));
+  PetscCall(InsertPhi(pc, gd->PhiFull, nullptr));
   PetscCall(DropZeroColumns(pc, MAT_REUSE_MATRIX));
   PetscCall(PetscLogEventEnd(GDSW_Extension, pc, 0, 0, 0));
   PetscFunctionReturn(0);
