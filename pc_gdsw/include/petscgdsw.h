@@ -31,6 +31,14 @@ typedef enum {
 } PCGDSWFirstLevelType;
 PETSC_EXTERN const char *const PCGDSWFirstLevelTypes[];
 
+/* RGDSW's partition of unity on an interface component shared by several coarse nodes
+   (Dohrmann & Widlund 2017). */
+typedef enum {
+  PC_GDSW_RGDSW_WEIGHTS_EQUAL,   /* option 1: 1 / (number of coarse nodes) */
+  PC_GDSW_RGDSW_WEIGHTS_DISTANCE /* option 2.2: proportional to 1 / (distance to the coarse node); needs coordinates */
+} PCGDSWRGDSWWeightType;
+PETSC_EXTERN const char *const PCGDSWRGDSWWeightTypes[];
+
 PETSC_EXTERN PetscErrorCode PCGDSWRegister(void);
 
 /* Element-based decomposition from an application that knows its mesh: for each of the n

@@ -203,16 +203,31 @@ static void SortedColumns(const Subdomain &s, std::vector<PetscInt> &cols, std::
   std::sort(cols.begin(), cols.end());
 }
 
+/* The lengths of the rows of Phi a subdomain sets, per leaf (node) of the node star forest:
+   entries in the columns of the row owner's diagonal block, and the others. */
+struct RowLengths {
+  std::vector<PetscInt> diag, offdiag;
+};
+
 /* Phi's rows, each set by exactly one subdomain: its interior rows (dense over its columns) and
    the interface rows of the nodes whose sharing set it leads (over their nonzero columns; Phi_Gamma
-   does not depend on A, so neither does this pattern). With count, only the interface rows'
-   lengths are recorded, per leaf of the node star forest. */
-static PetscErrorCode InsertPhi(PC pc, Mat P, std::vector<PetscInt> *count)
+   does not depend on A, so neither does this pattern). Rows may belong to other ranks (given
+   subdomains need not follow the row layout). With len, only the row lengths are recorded; colRange
+   holds every rank's first column of Phi (size + 1). */
+static PetscErrorCode InsertPhi(PC pc, Mat P, RowLengths *len, const std::vector<PetscInt> &colRange)
 {
-  PC_GDSW       *gd = (PC_GDSW *)pc->data;
-  const PetscInt bs = gd->bs;
+  PC_GDSW           *gd = (PC_GDSW *)pc->data;
+  const PetscInt     bs = gd->bs;
+  const PetscSFNode *owner = nullptr;
 
   PetscFunctionBegin;
+  if (len) PetscCall(PetscSFGetGraph(gd->nodeSF, nullptr, nullptr, nullptr, &owner));
+  /* a row's lengths, recorded at its node's leaf */
+  auto record = [&](const Subdomain &s, PetscInt a, const PetscInt *cols, PetscInt n) {
+    const PetscInt leaf = s.leaf0 + a, r = owner[leaf].rank;
+    const PetscInt d = (PetscInt)(std::lower_bound(cols, cols + n, colRange[r + 1]) - std::lower_bound(cols, cols + n, colRange[r]));
+    len->diag[leaf] = std::max(len->diag[leaf], d), len->offdiag[leaf] = std::max(len->offdiag[leaf], n - d);
+  };
   for (auto &s : *gd->sub) {
     std::vector<PetscInt> cols, pos, nzCols;
     SortedColumns(s, cols, pos);
@@ -225,17 +240,18 @@ static PetscErrorCode InsertPhi(PC pc, Mat P, std::vector<PetscInt> *count)
     PetscCall(ISGetIndices(s.isI, &I));
     PetscCall(ISGetIndices(s.isG, &G));
     std::vector<PetscScalar> row(ncols);
-    if (nI && !count) {
-      const PetscScalar *x;
-      PetscCall(MatDenseGetArrayRead(s.PhiI, &x));
-      for (PetscInt r = 0; r < nI; r++) {
-        const PetscInt grow = s.nodes[I[r] / bs] * bs + I[r] % bs;
-        for (PetscInt j = 0; j < ncols; j++) row[j] = x[pos[j] * nI + r];
-        PetscCall(MatSetValues(P, 1, &grow, ncols, cols.data(), row.data(), INSERT_VALUES));
+    const PetscScalar       *x = nullptr, *y;
+    if (nI) PetscCall(MatDenseGetArrayRead(s.PhiI, &x));
+    for (PetscInt r = 0; r < nI; r++) {
+      const PetscInt grow = s.nodes[I[r] / bs] * bs + I[r] % bs;
+      if (len) {
+        record(s, I[r] / bs, cols.data(), ncols);
+        continue;
       }
-      PetscCall(MatDenseRestoreArrayRead(s.PhiI, &x));
+      for (PetscInt j = 0; j < ncols; j++) row[j] = x[pos[j] * nI + r];
+      PetscCall(MatSetValues(P, 1, &grow, ncols, cols.data(), row.data(), INSERT_VALUES));
     }
-    const PetscScalar *y;
+    if (nI) PetscCall(MatDenseRestoreArrayRead(s.PhiI, &x));
     PetscCall(MatDenseGetArrayRead(s.PhiG, &y));
     for (PetscInt r = 0; r < nG; r++) {
       const PetscInt a = G[r] / bs;
@@ -244,57 +260,48 @@ static PetscErrorCode InsertPhi(PC pc, Mat P, std::vector<PetscInt> *count)
       for (PetscInt j = 0; j < ncols; j++)
         if (y[pos[j] * nG + r] != 0.0) row[nzCols.size()] = y[pos[j] * nG + r], nzCols.push_back(cols[j]);
       const PetscInt grow = s.nodes[a] * bs + G[r] % bs, nnz = (PetscInt)nzCols.size();
-      if (count) (*count)[s.leaf0 + a] = std::max((*count)[s.leaf0 + a], nnz);
+      if (len) record(s, a, nzCols.data(), nnz);
       else PetscCall(MatSetValues(P, 1, &grow, nnz, nzCols.data(), row.data(), INSERT_VALUES));
     }
     PetscCall(MatDenseRestoreArrayRead(s.PhiG, &y));
     PetscCall(ISRestoreIndices(s.isI, &I));
     PetscCall(ISRestoreIndices(s.isG, &G));
   }
-  if (!count) {
+  if (!len) {
     PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
   }
   PetscFunctionReturn(0);
 }
 
-/* Exact row lengths of Phi: interior rows are owned here and dense over their subdomain's
-   columns; an interface row may be set by a subdomain of another rank, so its length (the
-   longest of its node's rows) travels to the node's owner along the node star forest. */
-static PetscErrorCode PreallocatePhi(PC pc, Mat P, PetscInt ncolsLocal)
+/* Exact row lengths of Phi (per node: the longest of its dofs' rows), gathered at each node's
+   owner along the node star forest, then the rows. */
+static PetscErrorCode AssemblePhi(PC pc, Mat P, PetscInt ncolsLocal)
 {
   PC_GDSW       *gd = (PC_GDSW *)pc->data;
   const PetscInt bs = gd->bs;
-  PetscInt       rstart, rend, cend, nroots, nleaves;
+  PetscMPIInt    size;
+  PetscInt       nroots, nleaves;
+  MPI_Comm       comm;
 
   PetscFunctionBegin;
-  PetscCall(MatGetOwnershipRange(gd->A, &rstart, &rend));
-  PetscCallMPI(MPI_Scan(&ncolsLocal, &cend, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)pc)));
-  const PetscInt cstart = cend - ncolsLocal;
+  PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  std::vector<PetscInt> colRange(size + 1, 0);
+  PetscCallMPI(MPI_Allgather(&ncolsLocal, 1, MPIU_INT, colRange.data() + 1, 1, MPIU_INT, comm));
+  for (PetscMPIInt r = 0; r < size; r++) colRange[r + 1] += colRange[r];
   PetscCall(PetscSFGetGraph(gd->nodeSF, &nroots, &nleaves, nullptr, nullptr));
-  std::vector<PetscInt> leafCount(nleaves, 0), nodeCount(nroots, 0), dnz(rend - rstart, 0), onz(rend - rstart, 0);
-  PetscCall(InsertPhi(pc, P, &leafCount));
-  PetscCall(PetscSFReduceBegin(gd->nodeSF, MPIU_INT, leafCount.data(), nodeCount.data(), MPI_MAX));
-  PetscCall(PetscSFReduceEnd(gd->nodeSF, MPIU_INT, leafCount.data(), nodeCount.data(), MPI_MAX));
+  RowLengths leaf{std::vector<PetscInt>(nleaves, 0), std::vector<PetscInt>(nleaves, 0)};
+  std::vector<PetscInt> dnode(nroots, 0), onode(nroots, 0), dnz(nroots * bs), onz(nroots * bs);
+  PetscCall(InsertPhi(pc, P, &leaf, colRange));
+  PetscCall(PetscSFReduceBegin(gd->nodeSF, MPIU_INT, leaf.diag.data(), dnode.data(), MPI_MAX));
+  PetscCall(PetscSFReduceEnd(gd->nodeSF, MPIU_INT, leaf.diag.data(), dnode.data(), MPI_MAX));
+  PetscCall(PetscSFReduceBegin(gd->nodeSF, MPIU_INT, leaf.offdiag.data(), onode.data(), MPI_MAX));
+  PetscCall(PetscSFReduceEnd(gd->nodeSF, MPIU_INT, leaf.offdiag.data(), onode.data(), MPI_MAX));
   for (PetscInt a = 0; a < nroots; a++)
-    for (PetscInt c = 0; c < bs; c++) {
-      dnz[a * bs + c] = std::min(nodeCount[a], ncolsLocal);
-      onz[a * bs + c] = nodeCount[a];
-    }
-  for (auto &s : *gd->sub) {
-    PetscInt ndiag = 0, ncols = 0, nI;
-    for (auto &g : s.groups)
-      for (PetscInt j = 0; j < g.ncols; j++, ncols++) ndiag += (g.col0 + j >= cstart && g.col0 + j < cend);
-    const PetscInt *I;
-    PetscCall(ISGetLocalSize(s.isI, &nI));
-    PetscCall(ISGetIndices(s.isI, &I));
-    for (PetscInt r = 0; r < nI; r++) {
-      const PetscInt lrow = s.nodes[I[r] / bs] * bs + I[r] % bs - rstart;
-      dnz[lrow] = ndiag, onz[lrow] = ncols - ndiag;
-    }
-    PetscCall(ISRestoreIndices(s.isI, &I));
-  }
+    for (PetscInt c = 0; c < bs; c++) dnz[a * bs + c] = dnode[a], onz[a * bs + c] = onode[a];
   PetscCall(MatXAIJSetPreallocation(P, 1, dnz.data(), onz.data(), nullptr, nullptr));
+  PetscCall(InsertPhi(pc, P, nullptr, colRange));
   PetscFunctionReturn(0);
 }
 
@@ -361,8 +368,7 @@ PetscErrorCode GDSWBuildCoarseBasis(PC pc)
   PetscCall(MatCreate(PetscObjectComm((PetscObject)pc), &gd->PhiFull));
   PetscCall(MatSetType(gd->PhiFull, MATAIJ));
   PetscCall(MatSetSizes(gd->PhiFull, m, n, M, N));
-  PetscCall(PreallocatePhi(pc, gd->PhiFull, n));
-  PetscCall(InsertPhi(pc, gd->PhiFull, nullptr));
+  PetscCall(AssemblePhi(pc, gd->PhiFull, n));
   PetscCall(DropZeroColumns(pc, MAT_INITIAL_MATRIX));
   PetscCall(MatGetSize(gd->Phi, nullptr, &gd->coarseDim));
   PetscCall(PetscLogEventEnd(GDSW_Extension, pc, 0, 0, 0));
@@ -378,7 +384,7 @@ PetscErrorCode GDSWUpdateCoarseBasis(PC pc)
   PetscCall(PetscLogEventBegin(GDSW_Extension, pc, 0, 0, 0));
   for (auto &s : *gd->sub) PetscCall(Extend(pc, s, MAT_REUSE_MATRIX));
   PetscCall(MatZeroEntries(gd->PhiFull));
-  PetscCall(InsertPhi(pc, gd->PhiFull, nullptr));
+  PetscCall(InsertPhi(pc, gd->PhiFull, nullptr, {}));
   PetscCall(DropZeroColumns(pc, MAT_REUSE_MATRIX));
   PetscCall(PetscLogEventEnd(GDSW_Extension, pc, 0, 0, 0));
   PetscFunctionReturn(0);

@@ -8,6 +8,7 @@
 const char *const PCGDSWCoarseSpaceTypes[] = {"gdsw", "rgdsw", "none", "PCGDSWCoarseSpaceType", "PC_GDSW_COARSE_", nullptr};
 const char *const PCGDSWCombinationTypes[] = {"additive", "multiplicative", "PCGDSWCombinationType", "PC_GDSW_", nullptr};
 const char *const PCGDSWFirstLevelTypes[]  = {"additive", "restricted", "PCGDSWFirstLevelType", "PC_GDSW_FIRST_LEVEL_", nullptr};
+const char *const PCGDSWRGDSWWeightTypes[] = {"equal", "distance", "PCGDSWRGDSWWeightType", "PC_GDSW_RGDSW_WEIGHTS_", nullptr};
 
 PetscLogEvent GDSW_Decomposition, GDSW_Interface, GDSW_Basis, GDSW_Extension, GDSW_CoarseSetUp, GDSW_LocalFactor, GDSW_Apply;
 
@@ -296,6 +297,7 @@ static PetscErrorCode PCSetFromOptions_GDSW(PC pc, PetscOptionItems *PetscOption
   PetscCall(PetscOptionsInt("-pc_gdsw_overlap", "Overlap in layers of the matrix graph (used when the caller gives no overlapping subdomains)", "PCGDSWSetOverlap", n, &n, &flg));
   if (flg) PetscCall(PCGDSWSetOverlap(pc, n));
   PetscCall(PetscOptionsEnum("-pc_gdsw_coarse_space", "Coarse space", "PCGDSWSetCoarseSpaceType", PCGDSWCoarseSpaceTypes, (PetscEnum)gd->coarseType, (PetscEnum *)&gd->coarseType, nullptr));
+  PetscCall(PetscOptionsEnum("-pc_gdsw_rgdsw_weights", "RGDSW partition of unity: equal (option 1) or by inverse distance to the coarse nodes (option 2.2, needs coordinates)", "", PCGDSWRGDSWWeightTypes, (PetscEnum)gd->rgdswWeights, (PetscEnum *)&gd->rgdswWeights, nullptr));
   PetscCall(PetscOptionsBool("-pc_gdsw_rotations", "Use the rotations of the null space (false: GDSW-nr, translations only)", "PCGDSWSetRotations", gd->rotations, &gd->rotations, nullptr));
   PetscCall(PetscOptionsEnum("-pc_gdsw_combination", "How the coarse and local corrections are combined", "", PCGDSWCombinationTypes, (PetscEnum)gd->combination, (PetscEnum *)&gd->combination, nullptr));
   PetscCall(PetscOptionsEnum("-pc_gdsw_first_level_type", "Plain additive (symmetric) or restricted (RAS) prolongation of the local corrections", "", PCGDSWFirstLevelTypes, (PetscEnum)gd->firstLevel, (PetscEnum *)&gd->firstLevel, nullptr));
@@ -489,6 +491,7 @@ PetscErrorCode PCGDSWGetInterfaceCounts(PC pc, PetscInt *faces, PetscInt *edges,
 .  -pc_gdsw_subdomain_size <40000> - the size rule's target dofs per subdomain
 .  -pc_gdsw_overlap <1> - overlap in layers of the matrix graph
 .  -pc_gdsw_coarse_space <gdsw,rgdsw,none> - coarse space
+.  -pc_gdsw_rgdsw_weights <distance,equal> - RGDSW partition of unity (equal without coordinates)
 .  -pc_gdsw_rotations <true> - false gives GDSW-nr (translations only)
 .  -pc_gdsw_combination <additive,multiplicative> - combination of the two levels
 .  -pc_gdsw_first_level_type <additive,restricted> - prolongation of local corrections
@@ -511,6 +514,7 @@ PETSC_EXTERN PetscErrorCode PCCreate_GDSW(PC pc)
   gd->combination      = PC_GDSW_ADDITIVE;
   gd->firstLevel       = PC_GDSW_FIRST_LEVEL_ADDITIVE;
   gd->rotations        = PETSC_TRUE;
+  gd->rgdswWeights     = PC_GDSW_RGDSW_WEIGHTS_DISTANCE;
   gd->reuseCoarseBasis = PETSC_FALSE;
   gd->nUser            = -1;
   gd->sub              = new std::vector<gdsw::Subdomain>();

@@ -67,6 +67,7 @@ typedef struct {
   PCGDSWCombinationType combination;
   PCGDSWFirstLevelType  firstLevel;
   PetscBool             rotations;
+  PCGDSWRGDSWWeightType rgdswWeights;
   PetscBool             reuseCoarseBasis;
   /* input */
   PetscInt  nUser;                        /* user subdomains (PCGDSWSetSubdomains), -1 if none */

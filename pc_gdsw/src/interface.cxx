@@ -5,6 +5,7 @@
    sharing set contains all nodes of the set and the matrix couplings among them. */
 #include "gdswimpl.h"
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 using gdsw::CoarseGroup;
@@ -142,10 +143,26 @@ static bool Includes(const std::vector<PetscInt> &big, const std::vector<PetscIn
   return std::includes(big.begin(), big.end(), small.begin(), small.end());
 }
 
+/* Weight of coarse node v at interface node a (support node of a component whose coarse nodes
+   are `ancestors`): equal shares, or shares by inverse distance to the coarse nodes' centroids. */
+static PetscReal Weight(const PC_GDSW *gd, const Subdomain &s, PetscInt a, const CoarseGroup &v, const std::vector<const CoarseGroup *> &ancestors)
+{
+  if (ancestors.size() == 1) return 1.0;
+  if (gd->rgdswWeights == PC_GDSW_RGDSW_WEIGHTS_EQUAL || !gd->haveCoords) return 1.0 / ancestors.size();
+  auto inverseDistance = [&](const CoarseGroup &w) {
+    PetscReal d2 = 0;
+    for (PetscInt d = 0; d < gd->bs; d++) d2 += PetscSqr(s.nodeData[a * gd->bs + d] - w.center[d]);
+    return 1.0 / std::max(std::sqrt(d2), PETSC_SMALL);
+  };
+  PetscReal sum = 0;
+  for (const CoarseGroup *w : ancestors) sum += inverseDistance(*w);
+  return inverseDistance(v) / sum;
+}
+
 /* RGDSW: the coarse nodes are the components no other component's sharing set strictly
-   contains; each interface node is shared equally among the coarse nodes whose sharing set
-   contains its own (Dohrmann & Widlund's option 1). */
-static void ReduceToCoarseNodes(std::vector<CoarseGroup> &comps)
+   contains; each interface node is shared among the coarse nodes whose sharing set contains
+   its own, with the weights above. */
+static void ReduceToCoarseNodes(const PC_GDSW *gd, const Subdomain &s, std::vector<CoarseGroup> &comps)
 {
   std::vector<CoarseGroup> nodes;
   for (const auto &c : comps) {
@@ -154,15 +171,16 @@ static void ReduceToCoarseNodes(std::vector<CoarseGroup> &comps)
       if (d.sharing.size() > c.sharing.size() && Includes(d.sharing, c.sharing)) maximal = false;
     if (maximal) nodes.push_back(c);
   }
-  for (auto &v : nodes) {
-    v.support.clear(), v.weight.clear();
-    for (const auto &c : comps) {
+  for (auto &v : nodes) v.support.clear(), v.weight.clear();
+  for (const auto &c : comps) {
+    std::vector<const CoarseGroup *> ancestors;
+    for (const auto &w : nodes)
+      if (Includes(w.sharing, c.sharing)) ancestors.push_back(&w);
+    for (auto &v : nodes) {
       if (!Includes(v.sharing, c.sharing)) continue;
-      PetscInt nAncestors = 0;
-      for (const auto &w : nodes) nAncestors += Includes(w.sharing, c.sharing);
       for (PetscInt a : c.support) {
         v.support.push_back(a);
-        v.weight.push_back(1.0 / nAncestors);
+        v.weight.push_back(Weight(gd, s, a, v, ancestors));
       }
     }
   }
@@ -270,7 +288,7 @@ PetscErrorCode GDSWBuildInterface(PC pc)
     PetscCall(FindComponents(pc, s, s.groups));
     for (const auto &c : s.groups)
       if (c.sharing[0] == s.gid) local[c.kind]++;
-    if (gd->coarseType == PC_GDSW_COARSE_RGDSW) ReduceToCoarseNodes(s.groups);
+    if (gd->coarseType == PC_GDSW_COARSE_RGDSW) ReduceToCoarseNodes(gd, s, s.groups);
   }
   PetscCallMPI(MPIU_Allreduce(local, gd->counts, 3, MPIU_INT, MPI_SUM, comm));
   PetscFunctionReturn(0);
