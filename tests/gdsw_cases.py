@@ -225,12 +225,12 @@ def view_and_log():
               "12 faces, 6 edges, 1 vertices", "coarse dimension 105", "prefix -pc_gdsw_coarse_", "prefix -pc_gdsw_sub_",
               "GDSWDecomp", "GDSWInterface", "GDSWBasis", "GDSWExtension", "GDSWCoarseSetUp", "GDSWLocalFactor", "GDSWApply"):
         assert s in out, f"missing in -ksp_view/-log_view output: {s!r}"
-    for opts, line in (([], "subdomains per rank: chosen by the size rule, about 40000 dofs each (-pc_gdsw_subdomain_size): 1 on rank 0"),
+    for opts, line in (([], "subdomains per rank: chosen by the size rule, about 12000 dofs each (-pc_gdsw_subdomain_size): 1 on rank 0"),
                        (["-pc_gdsw_subdomain_size", 1000], "about 1000 dofs each (-pc_gdsw_subdomain_size): 7 on rank 0"),
                        (["-pc_gdsw_subdomains", 3], "subdomains per rank: 3, given (-pc_gdsw_subdomains)")):
         assert line in run([ELASTICITY, "-n", 16, "-ksp_view"] + opts, 2), f"missing in -ksp_view: {line!r}"
     out = run([ELASTICITY, "-n", 4, "-boxes", 2, "-help"])
-    for s in ("-pc_gdsw_subdomains <now -1", "-pc_gdsw_subdomain_size <now", "-pc_gdsw_overlap <now 1", "-pc_gdsw_coarse_space <now gdsw", "-pc_gdsw_rotations: <TRUE",
+    for s in ("-pc_gdsw_subdomains <now -1", "-pc_gdsw_subdomain_size <now", "-pc_gdsw_overlap <now 1", "-pc_gdsw_coarse_space <now gdsw", "-pc_gdsw_rgdsw_weights <now distance", "-pc_gdsw_rotations: <TRUE",
               "-pc_gdsw_combination <now additive", "-pc_gdsw_first_level_type <now additive", "-pc_gdsw_reuse_coarse_basis: <FALSE",
               "-pc_gdsw_sub_pc_type", "-pc_gdsw_extension_pc_type", "-pc_gdsw_coarse_pc_type"):
         assert s in out, f"missing in -help: {s!r}"

@@ -488,7 +488,7 @@ PetscErrorCode PCGDSWGetInterfaceCounts(PC pc, PetscInt *faces, PetscInt *edges,
 
    Options Database Keys:
 +  -pc_gdsw_subdomains <-1> - subdomains per MPI rank (METIS on the rank's node graph); -1 (PETSC_DECIDE): the size rule
-.  -pc_gdsw_subdomain_size <40000> - the size rule's target dofs per subdomain
+.  -pc_gdsw_subdomain_size <12000> - the size rule's target dofs per subdomain
 .  -pc_gdsw_overlap <1> - overlap in layers of the matrix graph
 .  -pc_gdsw_coarse_space <gdsw,rgdsw,none> - coarse space
 .  -pc_gdsw_rgdsw_weights <distance,equal> - RGDSW partition of unity (equal without coordinates)
@@ -508,7 +508,7 @@ PETSC_EXTERN PetscErrorCode PCCreate_GDSW(PC pc)
   PetscCall(PetscNew(&gd));
   pc->data             = gd;
   gd->nsubPerRank      = PETSC_DECIDE;
-  gd->subdomainSize    = 40000;
+  gd->subdomainSize    = 12000;
   gd->overlap          = 1;
   gd->coarseType       = PC_GDSW_COARSE_GDSW;
   gd->combination      = PC_GDSW_ADDITIVE;
