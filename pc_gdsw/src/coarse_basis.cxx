@@ -160,20 +160,20 @@ static PetscErrorCode SetUpExtension(PC pc, Subdomain &s)
     j0 += g.ncols;
   }
   PetscCall(MatDenseRestoreArrayWrite(s.PhiG, &phi));
-  PetscCall(KSPCreate(PETSC_COMM_SELF, &s.kspII));
-  PetscCall(PetscObjectIncrementTabLevel((PetscObject)s.kspII, (PetscObject)pc, 1));
-  PetscCall(KSPSetOptionsPrefix(s.kspII, ((PetscObject)pc)->prefix));
-  PetscCall(KSPAppendOptionsPrefix(s.kspII, "pc_gdsw_extension_"));
-  PetscCall(GDSWDefaultFactorSolver(s.kspII, nullptr, gd->symmetric));
-  PetscCall(KSPSetFromOptions(s.kspII));
   PetscFunctionReturn(0);
 }
 
-/* Phi_I = -A_II^{-1} A_IGamma Phi_Gamma, with the current values of A. */
+/* Phi_I = -A_II^{-1} A_IGamma Phi_Gamma, with the current values of A. The interior solver
+   lives only for this solve: its factor would otherwise sit next to the first level's through
+   the whole run (the two are about the same size), and a new extension refactors anyway. */
 static PetscErrorCode Extend(PC pc, Subdomain &s, MatReuse reuse)
 {
-  PetscInt nI, ncols;
-  Mat      B;
+  PC_GDSW  *gd = (PC_GDSW *)pc->data;
+  PetscInt  nI, ncols;
+  Mat       B;
+  KSP       ksp;
+  PC        ipc;
+  PetscBool preonly, direct;
 
   PetscFunctionBegin;
   PetscCall(ISGetLocalSize(s.isI, &nI));
@@ -184,9 +184,20 @@ static PetscErrorCode Extend(PC pc, Subdomain &s, MatReuse reuse)
   PetscCall(MatMatMult(s.AIG, s.PhiG, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &B));
   PetscCall(MatScale(B, -1.0));
   if (reuse == MAT_INITIAL_MATRIX) PetscCall(MatDuplicate(B, MAT_DO_NOT_COPY_VALUES, &s.PhiI));
-  PetscCall(KSPSetOperators(s.kspII, s.AII, s.AII));
-  PetscCall(GDSWSetUpLocalSolver(s.kspII, "interior", s.gid));
-  PetscCall(KSPMatSolve(s.kspII, B, s.PhiI));
+  PetscCall(KSPCreate(PETSC_COMM_SELF, &ksp));
+  PetscCall(PetscObjectIncrementTabLevel((PetscObject)ksp, (PetscObject)pc, 1));
+  PetscCall(KSPSetOptionsPrefix(ksp, ((PetscObject)pc)->prefix));
+  PetscCall(KSPAppendOptionsPrefix(ksp, "pc_gdsw_extension_"));
+  PetscCall(GDSWDefaultFactorSolver(ksp, nullptr, gd->symmetric));
+  PetscCall(KSPSetFromOptions(ksp));
+  PetscCall(KSPSetOperators(ksp, s.AII, s.AII));
+  PetscCall(GDSWSetUpLocalSolver(ksp, "interior", s.gid));
+  PetscCall(KSPMatSolve(ksp, B, s.PhiI));
+  PetscCall(KSPGetPC(ksp, &ipc));
+  PetscCall(PetscObjectTypeCompare((PetscObject)ksp, KSPPREONLY, &preonly));
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)ipc, &direct, PCLU, PCCHOLESKY, ""));
+  gd->exactExtension = (PetscBool)(gd->exactExtension && preonly && direct);
+  PetscCall(KSPDestroy(&ksp));
   PetscCall(MatDestroy(&B));
   PetscFunctionReturn(0);
 }
@@ -361,6 +372,7 @@ PetscErrorCode GDSWBuildCoarseBasis(PC pc)
   PetscCall(PetscLogEventEnd(GDSW_Basis, pc, 0, 0, 0));
 
   PetscCall(PetscLogEventBegin(GDSW_Extension, pc, 0, 0, 0));
+  gd->exactExtension = PETSC_TRUE;
   for (auto &s : *gd->sub) PetscCall(Extend(pc, s, MAT_INITIAL_MATRIX));
   PetscCall(MatGetLocalSize(gd->A, &m, nullptr));
   PetscCall(MatGetSize(gd->A, &M, nullptr));
@@ -382,6 +394,7 @@ PetscErrorCode GDSWUpdateCoarseBasis(PC pc)
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(GDSW_Extension, pc, 0, 0, 0));
+  gd->exactExtension = PETSC_TRUE;
   for (auto &s : *gd->sub) PetscCall(Extend(pc, s, MAT_REUSE_MATRIX));
   PetscCall(MatZeroEntries(gd->PhiFull));
   PetscCall(InsertPhi(pc, gd->PhiFull, nullptr, {}));

@@ -94,21 +94,6 @@ static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, std:
   PetscFunctionReturn(0);
 }
 
-/* Exact interior solves: a direct factorisation applied once. */
-static PetscBool ExactExtension(const PC_GDSW *gd)
-{
-  for (const auto &s : *gd->sub) {
-    if (!s.kspII) continue;
-    PC        pc;
-    PetscBool preonly, direct;
-    KSPGetPC(s.kspII, &pc);
-    PetscObjectTypeCompare((PetscObject)s.kspII, KSPPREONLY, &preonly);
-    PetscObjectTypeCompareAny((PetscObject)pc, &direct, PCLU, PCCHOLESKY, "");
-    return (PetscBool)(preonly && direct);
-  }
-  return PETSC_TRUE; /* no interior anywhere on this rank */
-}
-
 /* Every subdomain's dense block, computed once for both the preallocation and the values. */
 static PetscErrorCode LocalBlocks(PC pc, std::vector<std::vector<PetscScalar>> &blocks)
 {
@@ -146,7 +131,7 @@ PetscErrorCode GDSWAssembleCoarseOperator(PC pc, PetscBool basisCurrent)
   PetscBool local, localAll;
 
   PetscFunctionBegin;
-  local = (PetscBool)(basisCurrent && !gd->keptCols && ExactExtension(gd));
+  local = (PetscBool)(basisCurrent && !gd->keptCols && gd->exactExtension);
   PetscCallMPI(MPIU_Allreduce(&local, &localAll, 1, MPIU_BOOL, MPI_LAND, PetscObjectComm((PetscObject)pc)));
   if (gd->A0 && gd->a0ByPtAP != !localAll) PetscCall(MatDestroy(&gd->A0)); /* the other method made it */
   gd->a0ByPtAP = (PetscBool)!localAll;

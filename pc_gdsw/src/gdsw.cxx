@@ -119,7 +119,6 @@ static PetscErrorCode PCReset_GDSW(PC pc)
     PetscCall(MatDestroy(&s.AIG));
     PetscCall(MatDestroy(&s.PhiG));
     PetscCall(MatDestroy(&s.PhiI));
-    PetscCall(KSPDestroy(&s.kspII));
     PetscCall(KSPDestroy(&s.ksp));
     PetscCall(VecDestroy(&s.x));
     PetscCall(VecDestroy(&s.y));

@@ -45,7 +45,6 @@ struct Subdomain {
   /* harmonic extension */
   Mat Anon = nullptr;                   /* A(Omega~_i, Omega~_i), a submatrix of Aovl */
   IS  nonInOvl = nullptr;               /* positions of Omega~_i's dofs within Omega_i^delta */
-  KSP kspII = nullptr;                  /* interior solver */
   Mat AII = nullptr, AIG = nullptr;
   IS  isI = nullptr, isG = nullptr;     /* local dofs of Omega~_i: interior / interface */
   Mat PhiG = nullptr, PhiI = nullptr;   /* dense: interface values, harmonic extension */
@@ -91,6 +90,7 @@ typedef struct {
   Mat      *AovlArr;                     /* A(Omega_i^delta, Omega_i^delta), as MatCreateSubMatrices() made them */
   /* coarse level */
   Mat Phi, A0;
+  PetscBool exactExtension;               /* every interior solve of the last extension was a direct factorisation */
   PetscBool a0ByPtAP;                     /* A0 was made by MatPtAP (and can be reused by it) */
   Mat PhiFull;                            /* Phi before dropping zero columns (== Phi if none) */
   IS  keptCols;
