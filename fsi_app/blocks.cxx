@@ -1,47 +1,53 @@
 #include "blocks.h"
-#include "discretization/fields.h"
+#include <algorithm>
 
 namespace fsi {
 
-PetscErrorCode CreateBlocks(const Scene &sc, DM dm, Blocks &b)
+PetscErrorCode CreateBlocks(const Scene &sc, Blocks &b)
 {
-  Fields         &f      = b.fields;
-  const PetscBool solid  = (PetscBool)(sc.physics == PHYSICS_STRUCTURE);
-  const PetscBool fluid  = (PetscBool)(sc.physics == PHYSICS_FLUID);
-  const PetscBool moving = (PetscBool)(sc.physics == PHYSICS_GEOMETRY || sc.movingMesh);
+  auto      has      = [&](const char *name) { return (PetscBool)(std::find(sc.blocks.begin(), sc.blocks.end(), name) != sc.blocks.end()); };
+  PetscBool coupled  = has("coupling");
 
   PetscFunctionBegin;
-  PetscCheck(!solid || sc.degree == 2, PETSC_COMM_WORLD, PETSC_ERR_SUP, "-structure_degree %" PetscInt_FMT ": the element loops are P2 (use 2)", sc.degree);
-  if (solid) PetscCall(AddLagrangeField(dm, "displacement", sc.region, 3, sc.degree, &f.displacement));
-  if (fluid) {
-    PetscCall(AddLagrangeField(dm, "velocity", sc.fluidRegion, 3, 2, &f.velocity));
-    PetscCall(AddLagrangeField(dm, "pressure", sc.fluidRegion, 1, 1, &f.pressure));
-  }
-  if (moving) PetscCall(AddLagrangeField(dm, "geometry", sc.fluidRegion, 3, 2, &f.geometry));
-  PetscCall(DMCreateDS(dm));
+  for (const auto &n : sc.blocks)
+    PetscCheck(n == "structure" || n == "fluid" || n == "geometry" || n == "coupling", PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-blocks: unknown block '%s' (structure, fluid, geometry, coupling)", n.c_str());
+  PetscCheck(!coupled || (has("structure") && has("fluid") && has("geometry")), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-blocks: the coupling ties structure, fluid and geometry: name all four");
+  PetscCheck(!coupled || sc.region[0], PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_region: name the wall's group (the fluid's cells are not the wall's)");
+  if (has("structure")) b.structure = std::make_unique<StructureBlock>(sc);
+  if (has("geometry")) b.geometry = std::make_unique<GeometryBlock>(sc, coupled, has("fluid"));
+  if (has("fluid")) b.fluid = std::make_unique<FluidBlock>(sc, b.geometry.get());
+  if (coupled) b.coupling = std::make_unique<CouplingBlock>(sc, *b.structure, *b.fluid, *b.geometry);
+  for (Block *blk : {(Block *)b.structure.get(), (Block *)b.fluid.get(), (Block *)b.geometry.get(), (Block *)b.coupling.get()})
+    if (blk) b.list.push_back(blk);
+  PetscCheck(!b.list.empty(), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-blocks: name at least one block");
+  PetscFunctionReturn(0);
+}
 
-  b.motion = {sc.geometryAmplitude, sc.geometryRamp, sc.Dynamic()};
-  b.flow.kind = sc.mmsFlow, b.flow.rho = sc.rhoFluid, b.flow.mu = sc.muFluid, b.flow.ramp = sc.mmsRamp, b.flow.dynamic = sc.Dynamic();
-  b.flow.motion = moving ? &b.motion : nullptr;
-  if (solid) PetscCall(StructureConditions(sc, dm, f.displacement));
-  if (fluid) PetscCall(FluidConditions(sc, dm, f.velocity, b.flow));
-  if (moving) PetscCall(GeometryConditions(sc, dm, f.geometry, b.motion));
-
-  if (solid) {
-    PetscCall(SetUpStructure(sc, dm, f.displacement, b.structure));
-    b.system.blocks.push_back({"structure", StructureResidual, StructureJacobian, &b.structure});
-  }
-  if (moving) {
-    PetscCall(SetUpGeometry(sc, dm, f.geometry, b.geometry));
-    b.system.blocks.push_back({"geometry", GeometryResidual, GeometryJacobian, &b.geometry});
-  }
-  if (fluid) {
-    PetscCall(SetUpFluid(sc, dm, f.velocity, f.pressure, b.flow, b.fluid));
-    b.fluid.mesh = moving ? &b.geometry.cells : nullptr;
-    b.system.blocks.push_back({"fluid", FluidResidual, FluidJacobian, &b.fluid});
-  }
+PetscErrorCode SetUpBlocks(DM dm, Blocks &b)
+{
+  PetscFunctionBegin;
+  for (Block *blk : b.list) PetscCall(blk->AddFields(dm));
+  for (Block *blk : b.list) PetscCall(blk->AddConditions(dm, b.conditions));
+  PetscCall(CreateSection(dm, b.conditions));
+  for (Block *blk : b.list) PetscCall(blk->SetUp(dm));
+  b.system.blocks = b.list;
   PetscCall(SystemAttach(dm, b.system));
   PetscFunctionReturn(0);
+}
+
+Splits Blocks::Splits() const
+{
+  fsi::Splits splits;
+  for (Block *blk : list) {
+    auto s = std::find_if(splits.begin(), splits.end(), [&](const auto &x) { return x.first == blk->SplitName(); });
+    if (s == splits.end()) s = splits.insert(splits.end(), {blk->SplitName(), {}});
+    for (PetscInt f : blk->SplitFields()) s->second.push_back(f);
+  }
+  for (auto &s : splits) std::sort(s.second.begin(), s.second.end());
+  const std::vector<std::string> order = {"structure", "geometry", "fluid"}; /* the block lower triangle */
+  auto rank = [&](const std::string &n) { return std::find(order.begin(), order.end(), n) - order.begin(); };
+  std::stable_sort(splits.begin(), splits.end(), [&](const auto &a, const auto &b) { return rank(a.first) < rank(b.first); });
+  return splits;
 }
 
 } // namespace fsi

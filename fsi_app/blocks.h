@@ -1,32 +1,37 @@
-/* The blocks a scene names, on one DM: their fields, their conditions, their cells, and the
-   nonlinear system they sum to. A field of a block the scene does not solve is -1 and allocates
-   nothing: a structure scene has no fluid unknowns, a fluid scene on a fixed mesh no geometry. */
+/* A scene's blocks: the ones it names (-blocks, or -physics as a shorthand), wired to each
+   other (the fluid moves with the geometry; the coupling ties structure, fluid and geometry),
+   on one DM: every block's fields, then every block's conditions (they build the section's
+   constraints), then each block's cells. The blocks' rows sum to the scene's system. */
 #pragma once
 
-#include "fluid/setup.h"
-#include "geometry/harmonic.h"
+#include "coupling/block.h"
+#include "fluid/block.h"
+#include "geometry/block.h"
+#include "solver/splits.h"
 #include "solver/system.h"
-#include "structure/setup.h"
+#include "structure/block.h"
+#include <memory>
 
 namespace fsi {
 
-struct Fields {
-  PetscInt displacement = -1, velocity = -1, pressure = -1, geometry = -1;
-};
-
 struct Blocks {
-  Fields           fields;
-  StructureBlock   structure;
-  FluidBlock       fluid;
-  GeometryBlock    geometry;
-  PrescribedMotion motion; /* prescribed data the conditions point to */
-  FlowMMS          flow;
-  System           system;
+  std::unique_ptr<StructureBlock> structure;
+  std::unique_ptr<FluidBlock>     fluid;
+  std::unique_ptr<GeometryBlock>  geometry;
+  std::unique_ptr<CouplingBlock>  coupling;
+  std::vector<Block *>            list; /* in the order of their fields */
+  Conditions                      conditions;
+  System                          system;
+
+  /* The named splits of PCFIELDSPLIT (solver/splits.h). */
+  fsi::Splits Splits() const;
 };
 
-/* Fields, then every block's conditions (they fix the numbering), then each block's cells;
-   the system becomes dm's residual and Jacobian. `sc` and `b` must outlive dm. The caller
-   hands the blocks the SNES (told of inverted cells) and the time history. */
-PetscErrorCode CreateBlocks(const Scene &sc, DM dm, Blocks &b);
+/* The blocks of the scene, before the mesh exists (they name the groups it must have). */
+PetscErrorCode CreateBlocks(const Scene &sc, Blocks &b);
+
+/* Fields, conditions, the section, cells; the system becomes dm's residual and Jacobian.
+   `sc` and `b` must outlive dm. */
+PetscErrorCode SetUpBlocks(DM dm, Blocks &b);
 
 } // namespace fsi

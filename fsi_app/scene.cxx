@@ -1,8 +1,10 @@
 #include "scene.h"
+#include "discretization/fields.h"
+#include <algorithm>
 
 namespace fsi {
 
-const char *const PhysicsNames[] = {"structure", "fluid", "geometry", "Physics", "PHYSICS_", nullptr};
+const char *const PhysicsNames[] = {"structure", "fluid", "geometry", "fsi", "Physics", "PHYSICS_", nullptr};
 
 PetscReal SmoothRamp(PetscReal t, PetscReal T, PetscReal *rate)
 {
@@ -15,10 +17,12 @@ PetscErrorCode ReadScene(Scene &sc)
 {
   PetscInt  n;
   PetscBool set;
+  char      blocks[256] = "";
 
   PetscFunctionBegin;
   PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "fsi_app scene", nullptr);
-  PetscCall(PetscOptionsEnum("-physics", "the block to solve: the wall, the fluid, or the harmonic extension alone (fsi: a later issue)", nullptr, PhysicsNames, (PetscEnum)sc.physics, (PetscEnum *)&sc.physics, nullptr));
+  PetscCall(PetscOptionsEnum("-physics", "what to solve: the wall, the fluid (with the geometry if -fluid_moving_mesh), the harmonic extension alone, or the coupled problem (fsi: structure, fluid, geometry, coupling)", nullptr, PhysicsNames, (PetscEnum)sc.physics, (PetscEnum *)&sc.physics, nullptr));
+  PetscCall(PetscOptionsString("-blocks", "the blocks of the scene, comma separated, from structure, fluid, geometry, coupling (empty: those of -physics)", nullptr, blocks, blocks, sizeof(blocks), nullptr));
   PetscCall(PetscOptionsString("-mesh", "gmsh mesh file", nullptr, sc.mesh, sc.mesh, sizeof(sc.mesh), nullptr));
   PetscCall(PetscOptionsInt("-refine", "uniform refinements of the mesh after distribution", nullptr, sc.refine, &sc.refine, nullptr));
   PetscCall(PetscOptionsString("-structure_region", "physical group of the wall's cells (empty: every cell)", nullptr, sc.region, sc.region, sizeof(sc.region), nullptr));
@@ -94,6 +98,13 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCheck(sc.dt >= 0 && (sc.dt == 0 || sc.tFinal >= sc.dt), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-dt %g -t_final %g: need 0 <= dt <= t_final", (double)sc.dt, (double)sc.tFinal);
   PetscCheck(sc.geometryRamp >= 0 && sc.mmsRamp >= 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-geometry_ramp %g -mms_ramp %g: must be >= 0", (double)sc.geometryRamp, (double)sc.mmsRamp);
   PetscCheck(!sc.movingMesh || sc.physics == PHYSICS_FLUID, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_moving_mesh: only with -physics fluid (-physics %s)", PhysicsNames[sc.physics]);
+  if (blocks[0]) sc.blocks = SplitList(blocks);
+  else if (sc.physics == PHYSICS_FSI) sc.blocks = {"structure", "fluid", "geometry", "coupling"};
+  else if (sc.physics == PHYSICS_FLUID && sc.movingMesh) sc.blocks = {"fluid", "geometry"};
+  else sc.blocks = {PhysicsNames[sc.physics]};
+  const PetscBool coupled = (PetscBool)(std::find(sc.blocks.begin(), sc.blocks.end(), "coupling") != sc.blocks.end());
+  for (const auto &g : SplitList(sc.noslip))
+    PetscCheck(!coupled || g.substr(0, g.find(':')) != sc.interface, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_noslip %s: on the interface %s the fluid moves with the wall (the coupling's u = d_t d_s); remove it from -fluid_noslip", sc.noslip, sc.interface);
   PetscCheck(!sc.inflow || (sc.inletPressure == 0 && !sc.mms && sc.poiseuille[0] == 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_inflow_velocity: the inlet cannot also take -fluid_inlet_pressure, -mms or -poiseuille (one condition per face)");
   PetscCheck(!sc.movingMesh || !sc.noslip[0], PETSC_COMM_WORLD, PETSC_ERR_SUP, "-fluid_moving_mesh with -fluid_noslip %s: a wall that moves needs u = w (the mesh velocity) there, which the coupling to the structure will impose; until then a moving mesh takes the manufactured flows' boundary values (-mms) and -fluid_noslip must be empty", sc.noslip);
   PetscCheck(sc.ramp >= 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_pressure_ramp %g: must be >= 0", (double)sc.ramp);

@@ -10,11 +10,12 @@
 
 namespace fsi {
 
-enum Physics { PHYSICS_STRUCTURE = 0, PHYSICS_FLUID = 1, PHYSICS_GEOMETRY = 2 };
+enum Physics { PHYSICS_STRUCTURE = 0, PHYSICS_FLUID = 1, PHYSICS_GEOMETRY = 2, PHYSICS_FSI = 3 };
 extern const char *const PhysicsNames[];
 
 struct Scene {
-  Physics physics = PHYSICS_STRUCTURE; /* the blocks a scene solves */
+  Physics                  physics = PHYSICS_STRUCTURE; /* shorthand for a list of blocks */
+  std::vector<std::string> blocks;                      /* the blocks a scene solves (blocks.h) */
   /* mesh */
   char     mesh[PETSC_MAX_PATH_LEN] = "meshes/cube_L0.msh";
   PetscInt refine                   = 0;

@@ -560,10 +560,10 @@ def structure_indefinite_tangent():
 
 @case
 def app_help():
-    """-help lists every application option the README's options table documents, each with its
-    default (PETSc prints <default>)."""
+    """-help lists every application option the options table of docs/fsi.md documents, each
+    with its default (PETSc prints <default>)."""
     out = run([APP, "-help", "-physics", "fluid"], 1, fail=None)
-    readme = open(os.path.join(MESHES, "..", "README.md")).read()
+    readme = open(os.path.join(MESHES, "..", "docs", "fsi.md")).read()
     table = readme[readme.index("### Options (defaults in brackets; `-help` prints them all)"):readme.index("### How it is built")]
     first = [line.split("|")[1] for line in table.splitlines() if line.startswith("| `")]  # the option column
     options = sorted({o for cell in first for o in re.findall(r"`(-[a-z_0-9]+)", cell)})

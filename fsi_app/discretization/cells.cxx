@@ -54,7 +54,19 @@ PetscErrorCode FieldCellsCreate(DM dm, DMLabel region, PetscInt field, FieldCell
     cells.point.insert(cells.point.end(), pt, pt + 10);
     cells.cell.push_back(c), cells.geom.push_back(g);
   }
+  cells.rows = cells.global;
   PetscFunctionReturn(0);
+}
+
+void FieldCellsDropRows(FieldCells &cells, const std::vector<PetscInt> &points)
+{
+  cells.dropped.assign(cells.nodes * cells.Size(), 0);
+  for (PetscInt k = 0; k < cells.Size(); k++)
+    for (PetscInt a = 0; a < cells.nodes; a++)
+      if (std::binary_search(points.begin(), points.end(), cells.point[10 * k + a])) {
+        cells.dropped[cells.nodes * k + a] = 1;
+        for (PetscInt i = 0; i < cells.nc; i++) cells.rows[cells.nc * (cells.nodes * k + a) + i] = -1;
+      }
 }
 
 PetscErrorCode CellFacesCreate(DM dm, const FieldCells &cells, DMLabel label, std::vector<CellFace> &faces)

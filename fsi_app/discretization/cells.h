@@ -17,6 +17,8 @@ struct FieldCells {
   std::vector<CellGeometry> geom;
   std::vector<PetscInt>     local;  /* `nodes` per cell: local-vector offset of the node's first dof */
   std::vector<PetscInt>     global; /* nodes nc per cell */
+  std::vector<PetscInt>     rows;   /* the rows the block assembles: global, but -1 at dropped nodes */
+  std::vector<char>         dropped; /* per cell node: its rows belong to another block (empty: none) */
   std::vector<PetscInt>     point;  /* 10 per cell: the mesh points of the P2 nodes (vertices, edges) */
 
   PetscInt Size() const { return (PetscInt)cell.size(); }
@@ -46,13 +48,19 @@ inline void Gather(const FieldCells &cells, PetscInt k, const PetscScalar *x, Pe
     for (PetscInt i = 0; i < cells.nc; i++) xe[cells.nc * a + i] = PetscRealPart(x[lo[a] + i]);
 }
 
-/* Add the Dofs() values of cell k into a local array. */
+/* Add the Dofs() values of cell k into a local array (not at dropped nodes). */
 inline void Scatter(const FieldCells &cells, PetscInt k, const PetscReal *re, PetscScalar *f)
 {
   const PetscInt *lo = &cells.local[cells.nodes * k];
+  const char     *drop = cells.dropped.empty() ? nullptr : &cells.dropped[cells.nodes * k];
   for (PetscInt a = 0; a < cells.nodes; a++)
-    for (PetscInt i = 0; i < cells.nc; i++) f[lo[a] + i] += re[cells.nc * a + i];
+    if (!drop || !drop[a])
+      for (PetscInt i = 0; i < cells.nc; i++) f[lo[a] + i] += re[cells.nc * a + i];
 }
+
+/* Leave the rows of the nodes on `points` (sorted mesh points) to another block: Scatter skips
+   them and rows[] is -1 there (MatSetValues skips negative rows). */
+void FieldCellsDropRows(FieldCells &cells, const std::vector<PetscInt> &points);
 
 /* Set the field's values at its nodes in a local array: value(X, v) at each node's reference
    position X (an initial state). */

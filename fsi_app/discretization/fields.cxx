@@ -54,49 +54,19 @@ std::vector<std::string> SplitList(const char *s)
   return out;
 }
 
-/* u = the constant vector ctx (nullptr: zero) */
-static PetscErrorCode Constant(PetscInt, PetscReal, const PetscReal[], PetscInt nc, PetscScalar *u, void *ctx)
+PetscErrorCode FieldNorm(DM dm, Vec x, PetscInt field, NormType type, PetscReal *norm)
 {
-  for (PetscInt c = 0; c < nc; c++) u[c] = ctx ? ((const PetscReal *)ctx)[c] : 0.0;
-  return 0;
-}
-
-PetscErrorCode LabelValues(DMLabel label, std::vector<PetscInt> &ids)
-{
-  IS              values;
-  PetscInt        nv, any, gany;
-  const PetscInt *v;
+  IS      *is;
+  PetscInt nf;
+  Vec      part;
 
   PetscFunctionBegin;
-  PetscCall(DMLabelGetValueIS(label, &values));
-  PetscCall(ISGetLocalSize(values, &nv));
-  PetscCall(ISGetIndices(values, &v));
-  ids.assign(v, v + nv);
-  PetscCall(ISRestoreIndices(values, &v));
-  PetscCall(ISDestroy(&values));
-  any = nv;
-  PetscCallMPI(MPIU_Allreduce(&any, &gany, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)label)));
-  if (ids.empty() && gany) ids.push_back(0); /* the label's values live on other ranks: DMAddBoundary is collective */
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode AddDirichlet(DM dm, const char *groups, PetscInt field, const char *option, const PetscReal *value)
-{
-  PetscFunctionBegin;
-  for (const auto &spec : SplitList(groups)) {
-    const std::string     g = spec.substr(0, spec.find(':'));
-    std::vector<PetscInt> comps; /* empty: all */
-    if (spec.find(':') != std::string::npos)
-      for (char c : spec.substr(spec.find(':') + 1)) {
-        PetscCheck(c == 'x' || c == 'y' || c == 'z', PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s %s: components are x, y, z", option, spec.c_str());
-        comps.push_back(c - 'x');
-      }
-    DMLabel               group;
-    std::vector<PetscInt> ids;
-    PetscCall(DMGetLabel(dm, g.c_str(), &group));
-    PetscCall(LabelValues(group, ids));
-    PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, spec.c_str(), group, (PetscInt)ids.size(), ids.data(), field, (PetscInt)comps.size(), comps.empty() ? nullptr : comps.data(), (void (*)(void))Constant, nullptr, (void *)value, nullptr));
-  }
+  PetscCall(DMCreateFieldIS(dm, &nf, nullptr, &is));
+  PetscCall(VecGetSubVector(x, is[field], &part));
+  PetscCall(VecNorm(part, type, norm));
+  PetscCall(VecRestoreSubVector(x, is[field], &part));
+  for (PetscInt f = 0; f < nf; f++) PetscCall(ISDestroy(&is[f]));
+  PetscCall(PetscFree(is));
   PetscFunctionReturn(0);
 }
 

@@ -1,6 +1,5 @@
 #include "nodes.h"
 #include "mesh/mesh.h"
-#include <petscds.h>
 
 namespace fsi {
 
@@ -30,104 +29,6 @@ PetscErrorCode NodePosition(DM dm, PetscInt point, PetscReal x[3])
     for (int d = 0; d < 3; d++) x[d] += PetscRealPart(xa[off + d]) / np;
   }
   PetscCall(VecRestoreArrayRead(coords, &xa));
-  PetscFunctionReturn(0);
-}
-
-/* The constrained nodes of a DM, found once (label closures and node positions cost more than
-   a residual) and kept on the DM: per boundary condition, the local offsets, components and
-   positions of its nodes. */
-struct EssentialNodes {
-  struct Condition {
-    PetscErrorCode (*g)(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *);
-    void                  *ctx;
-    std::vector<PetscInt>  comps;                 /* empty: every component */
-    std::vector<PetscInt>  offset, dof;           /* per node */
-    std::vector<PetscReal> x;                     /* 3 per node */
-  };
-  std::vector<Condition> conditions;
-};
-
-static PetscErrorCode DestroyEssentialNodes(void *ctx)
-{
-  delete (EssentialNodes *)ctx;
-  return 0;
-}
-
-static PetscErrorCode GetEssentialNodes(DM dm, EssentialNodes **nodes)
-{
-  PetscContainer container;
-  PetscDS        ds;
-  PetscSection   section;
-  PetscInt       nb;
-
-  PetscFunctionBegin;
-  PetscCall(PetscObjectQuery((PetscObject)dm, "fsi_essential_nodes", (PetscObject *)&container));
-  if (container) {
-    PetscCall(PetscContainerGetPointer(container, (void **)nodes));
-    PetscFunctionReturn(0);
-  }
-  auto *en = new EssentialNodes;
-  PetscCall(DMGetDS(dm, &ds));
-  PetscCall(DMGetLocalSection(dm, &section));
-  PetscCall(PetscDSGetNumBoundary(ds, &nb));
-  for (PetscInt b = 0; b < nb; b++) {
-    DMBoundaryConditionType type;
-    DMLabel                 label;
-    PetscInt                nv, field, nc;
-    const PetscInt         *values, *comps;
-    void (*func)(void), (*func_t)(void);
-    void                     *ctx;
-    EssentialNodes::Condition c;
-    PetscCall(PetscDSGetBoundary(ds, b, nullptr, &type, nullptr, &label, &nv, &values, &field, &nc, &comps, &func, &func_t, &ctx));
-    if (type != DM_BC_ESSENTIAL || !func) continue;
-    c.g = (PetscErrorCode(*)(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *))func, c.ctx = ctx;
-    c.comps.assign(comps, comps + nc);
-    PetscCall(ForEachLabelPoint(label, std::vector<PetscInt>(values, values + nv), [&](PetscInt point) -> PetscErrorCode {
-      PetscInt *closure = nullptr, ncl;
-      PetscFunctionBegin;
-      PetscCall(DMPlexGetTransitiveClosure(dm, point, PETSC_TRUE, &ncl, &closure));
-      for (PetscInt j = 0; j < ncl; j++) {
-        const PetscInt q = closure[2 * j];
-        PetscInt       dof, off;
-        PetscReal      x[3];
-        PetscCall(PetscSectionGetFieldDof(section, q, field, &dof));
-        if (!dof) continue;
-        PetscCall(PetscSectionGetFieldOffset(section, q, field, &off));
-        PetscCall(NodePosition(dm, q, x));
-        c.offset.push_back(off), c.dof.push_back(dof), c.x.insert(c.x.end(), x, x + 3);
-      }
-      PetscCall(DMPlexRestoreTransitiveClosure(dm, point, PETSC_TRUE, &ncl, &closure));
-      PetscFunctionReturn(0);
-    }));
-    en->conditions.push_back(c);
-  }
-  PetscCall(PetscContainerCreate(PetscObjectComm((PetscObject)dm), &container));
-  PetscCall(PetscContainerSetPointer(container, en));
-  PetscCall(PetscContainerSetUserDestroy(container, DestroyEssentialNodes));
-  PetscCall(PetscObjectCompose((PetscObject)dm, "fsi_essential_nodes", (PetscObject)container));
-  PetscCall(PetscContainerDestroy(&container));
-  *nodes = en;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode InsertEssentialValues(DM dm, PetscReal t, Vec local)
-{
-  EssentialNodes *en;
-  PetscScalar    *u;
-
-  PetscFunctionBegin;
-  PetscCall(GetEssentialNodes(dm, &en));
-  PetscCall(VecGetArray(local, &u));
-  for (const auto &c : en->conditions)
-    for (size_t k = 0; k < c.offset.size(); k++) {
-      PetscScalar val[3];
-      PetscCall(c.g(3, t, &c.x[3 * k], c.dof[k], val, c.ctx));
-      if (c.comps.empty())
-        for (PetscInt i = 0; i < c.dof[k]; i++) u[c.offset[k] + i] = val[i];
-      else /* only the listed components are constrained */
-        for (PetscInt i : c.comps) u[c.offset[k] + i] = val[i];
-    }
-  PetscCall(VecRestoreArray(local, &u));
   PetscFunctionReturn(0);
 }
 

@@ -1,6 +1,6 @@
 #include "assembly.h"
 #include "discretization/ale_map.h"
-#include "discretization/nodes.h"
+#include "discretization/conditions.h"
 
 namespace fsi {
 
@@ -10,7 +10,7 @@ struct CellState {
   PetscReal u[30], p[4], d[30], dudt[30], w[30];
 };
 
-static PetscErrorCode GetPast(const FluidBlock &fb, std::vector<const PetscScalar *> &past)
+static PetscErrorCode GetPast(const FluidForms &fb, std::vector<const PetscScalar *> &past)
 {
   PetscFunctionBegin;
   if (fb.history) /* statics has none */
@@ -22,14 +22,14 @@ static PetscErrorCode GetPast(const FluidBlock &fb, std::vector<const PetscScala
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode RestorePast(const FluidBlock &fb, std::vector<const PetscScalar *> &past)
+static PetscErrorCode RestorePast(const FluidForms &fb, std::vector<const PetscScalar *> &past)
 {
   PetscFunctionBegin;
   for (size_t j = 0; j < past.size(); j++) PetscCall(VecRestoreArrayRead(fb.history->past[j], &past[j]));
   PetscFunctionReturn(0);
 }
 
-static void GatherState(const FluidBlock &fb, PetscInt k, const PetscScalar *x, const std::vector<const PetscScalar *> &past, CellState &s)
+static void GatherState(const FluidForms &fb, PetscInt k, const PetscScalar *x, const std::vector<const PetscScalar *> &past, CellState &s)
 {
   Gather(fb.velocity, k, x, s.u);
   Gather(fb.pressure, k, x, s.p);
@@ -71,7 +71,7 @@ static void Evaluate(const CellState &s, const PetscReal N[10], const PetscReal 
    cell's mesh displacement, or nullptr), the basis values, the point, the outward unit normal
    and the area weight; n da = J F^-T N dA (Nanson). */
 template <class Body>
-static void ForEachFacePoint(const FluidBlock &fb, const CellFace &f, const PetscReal *de, Body body)
+static void ForEachFacePoint(const FluidForms &fb, const CellFace &f, const PetscReal *de, Body body)
 {
   const CellGeometry &g = fb.velocity.geom[f.k];
   PetscReal           e1[3], e2[3], N0[3];
@@ -92,7 +92,7 @@ static void ForEachFacePoint(const FluidBlock &fb, const CellFace &f, const Pets
   }
 }
 
-static PetscErrorCode ReportInverted(const FluidBlock &fb, PetscInt inverted)
+static PetscErrorCode ReportInverted(const FluidForms &fb, PetscInt inverted)
 {
   PetscFunctionBegin;
   if (!inverted) PetscFunctionReturn(0);
@@ -103,7 +103,7 @@ static PetscErrorCode ReportInverted(const FluidBlock &fb, PetscInt inverted)
 
 PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
 {
-  const FluidBlock                &fb = *(FluidBlock *)ctx;
+  const FluidForms                &fb = *(FluidForms *)ctx;
   std::vector<const PetscScalar *> past;
   PetscInt                         inverted = 0;
 
@@ -152,6 +152,7 @@ PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
       Scatter(fb.velocity, face.k, ru, f);
     }
   PetscCall(RestorePast(fb, past));
+  ((FluidForms *)ctx)->inverted = inverted;
   PetscCall(ReportInverted(fb, inverted));
   PetscFunctionReturn(0);
 }
@@ -159,7 +160,7 @@ PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
 /* Element matrix of the 30 velocity and 4 pressure dofs (rows and columns in that order). */
 PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P)
 {
-  const FluidBlock                &fb = *(FluidBlock *)ctx;
+  const FluidForms                &fb = *(FluidForms *)ctx;
   const int                        n  = 34;
   std::vector<const PetscScalar *> past;
 
@@ -207,7 +208,7 @@ PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FluidFlux(DM dm, const FluidBlock &fb, const std::vector<CellFace> &faces, Vec X, PetscReal *flux)
+PetscErrorCode FluidFlux(DM dm, const FluidForms &fb, const std::vector<CellFace> &faces, Vec X, PetscReal *flux)
 {
   Vec                Xl;
   const PetscScalar *x;

@@ -28,25 +28,25 @@ struct TractionGroup {
   Traction              traction;
 };
 
-struct FluidBlock {
+struct FluidForms {
   PetscReal                  rho = 1, mu = 0.03;
   FieldCells                 velocity, pressure; /* the same cells, P2 (3 components) and P1 */
   const FieldCells          *mesh = nullptr;     /* d_f on the same cells when the mesh moves */
   P2Rule                     rule;               /* degree 5: the convective term exactly on a fixed mesh */
   FaceRule                   faceRule;
   std::vector<TractionGroup> tractions;
-  std::vector<CellFace>      inletFaces, outletFaces; /* for the fluxes a run reports (empty: no such group) */
   BodyForce                  force;
   PetscReal                  time    = 0; /* of the step being solved: tractions, body force */
   const TimeHistory         *history = nullptr;
   SNES                       snes    = nullptr; /* told when a moved cell inverts (J <= 0) */
+  PetscInt                   inverted = 0;      /* quadrature points with J <= 0 in the last residual */
 };
 
-/* BlockOps of solver/system.h (the context is the FluidBlock). */
+/* BlockOps of solver/system.h (the context is the FluidForms). */
 PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f);
 PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P);
 
 /* int u . n da over the faces (in the current configuration): the flux through an outlet. X is global. */
-PetscErrorCode FluidFlux(DM dm, const FluidBlock &fb, const std::vector<CellFace> &faces, Vec X, PetscReal *flux);
+PetscErrorCode FluidFlux(DM dm, const FluidForms &fb, const std::vector<CellFace> &faces, Vec X, PetscReal *flux);
 
 } // namespace fsi

@@ -1,5 +1,4 @@
 #include "harmonic.h"
-#include "discretization/fields.h"
 
 namespace fsi {
 
@@ -7,7 +6,7 @@ namespace fsi {
    its operator applied: Newton converges in one step). */
 PetscErrorCode GeometryResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
 {
-  const GeometryBlock &gb = *(GeometryBlock *)ctx;
+  const GeometryForms &gb = *(GeometryForms *)ctx;
 
   PetscFunctionBegin;
   for (PetscInt k = 0; k < gb.cells.Size(); k++) {
@@ -31,7 +30,7 @@ PetscErrorCode GeometryResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
 
 PetscErrorCode GeometryJacobian(void *ctx, const PetscScalar *, Mat P)
 {
-  const GeometryBlock &gb = *(GeometryBlock *)ctx;
+  const GeometryForms &gb = *(GeometryForms *)ctx;
 
   PetscFunctionBegin;
   for (PetscInt k = 0; k < gb.cells.Size(); k++) {
@@ -47,32 +46,8 @@ PetscErrorCode GeometryJacobian(void *ctx, const PetscScalar *, Mat P)
           for (int i = 0; i < 3; i++) K[(3 * a + i) * 30 + 3 * b + i] += v;
         }
     }
-    PetscCall(MatSetValues(P, 30, &gb.cells.global[30 * k], 30, &gb.cells.global[30 * k], K, ADD_VALUES));
+    PetscCall(MatSetValues(P, 30, &gb.cells.rows[30 * k], 30, &gb.cells.global[30 * k], K, ADD_VALUES));
   }
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode GeometryConditions(const Scene &sc, DM dm, PetscInt field, const PrescribedMotion &motion)
-{
-  DMLabel               interface;
-  std::vector<PetscInt> ids;
-
-  PetscFunctionBegin;
-  PetscCall(DMGetLabel(dm, sc.interface, &interface));
-  PetscCall(LabelValues(interface, ids));
-  PetscCall(DMAddBoundary(dm, DM_BC_ESSENTIAL, "interface displacement", interface, (PetscInt)ids.size(), ids.data(), field, 0, nullptr, (void (*)(void))PrescribedDisplacementBC, nullptr, (void *)&motion, nullptr));
-  PetscCall(AddDirichlet(dm, sc.slip, field, "-geometry_slip"));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode SetUpGeometry(const Scene &sc, DM dm, PetscInt field, GeometryBlock &gb)
-{
-  DMLabel region;
-
-  PetscFunctionBegin;
-  PetscCall(GetRegionLabel(dm, sc.fluidRegion, &region));
-  PetscCall(FieldCellsCreate(dm, region, field, gb.cells));
-  PetscCall(CreateP2Rule(2, gb.rule));
   PetscFunctionReturn(0);
 }
 

@@ -1,9 +1,9 @@
 #include "predictor.h"
-#include "discretization/nodes.h"
+#include "discretization/conditions.h"
 
 namespace fsi {
 
-PetscErrorCode GeometryPredictorCreate(DM dm, PetscInt field, const GeometryBlock &gb, GeometryPredictor &p)
+PetscErrorCode GeometryPredictorCreate(DM dm, PetscInt field, const GeometryForms &gb, GeometryPredictor &p)
 {
   Mat full;
   PC  pc;

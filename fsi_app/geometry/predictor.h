@@ -11,14 +11,14 @@ namespace fsi {
 
 struct GeometryPredictor {
   DM                   dm = nullptr;
-  const GeometryBlock *gb = nullptr;
+  const GeometryForms *gb = nullptr;
   IS                   is = nullptr; /* the geometry rows of the global vector */
   Mat                  K  = nullptr; /* their vector Laplacian */
   KSP                  ksp = nullptr; /* options prefix -geometry_predictor_ (CG + GAMG, rtol 1e-10) */
   Vec                  delta = nullptr;
 };
 
-PetscErrorCode GeometryPredictorCreate(DM dm, PetscInt field, const GeometryBlock &gb, GeometryPredictor &p);
+PetscErrorCode GeometryPredictorCreate(DM dm, PetscInt field, const GeometryForms &gb, GeometryPredictor &p);
 /* x (global) gets d_f = the harmonic extension of the interface displacement at time t. */
 PetscErrorCode GeometryPredict(GeometryPredictor &p, PetscReal t, Vec x);
 PetscErrorCode GeometryPredictorDestroy(GeometryPredictor &p);

@@ -1,5 +1,5 @@
 #include "checkpoint.h"
-#include "discretization/nodes.h"
+#include "discretization/conditions.h"
 #include <cstdio>
 
 namespace fsi {

@@ -52,6 +52,12 @@ PetscErrorCode WriteReport(const char *file, MPI_Comm comm, const RunReport &r)
   PetscCall(PetscFOpen(comm, file, "w", &fp));
   PetscCall(PetscFPrintf(comm, fp, "{\n  \"unknowns\": {"));
   for (size_t k = 0; k < r.unknowns.size(); k++) PetscCall(PetscFPrintf(comm, fp, "%s\"%s\": %" PetscInt_FMT, k ? ", " : "", r.unknowns[k].first.c_str(), r.unknowns[k].second));
+  PetscCall(PetscFPrintf(comm, fp, "},\n  \"unknowns_per_rank\": {"));
+  for (size_t k = 0; k < r.unknownsPerRank.size(); k++) {
+    PetscCall(PetscFPrintf(comm, fp, "%s\"%s\": [", k ? ", " : "", r.unknownsPerRank[k].first.c_str()));
+    for (size_t j = 0; j < r.unknownsPerRank[k].second.size(); j++) PetscCall(PetscFPrintf(comm, fp, "%s%" PetscInt_FMT, j ? ", " : "", r.unknownsPerRank[k].second[j]));
+    PetscCall(PetscFPrintf(comm, fp, "]"));
+  }
   PetscCall(PetscFPrintf(comm, fp, "},\n  \"restarted_at_step\": %" PetscInt_FMT ",\n  \"steps\": [", r.restartedAt));
   for (size_t k = 0; k < r.steps.size(); k++) {
     const StepRecord &s = r.steps[k];

@@ -23,7 +23,8 @@ PetscErrorCode PhasesBegin();
 PetscErrorCode PhasesMeasure(MPI_Comm comm, double total, Phases &p);
 
 struct RunReport {
-  std::vector<std::pair<std::string, PetscInt>>  unknowns;
+  std::vector<std::pair<std::string, PetscInt>>              unknowns;
+  std::vector<std::pair<std::string, std::vector<PetscInt>>> unknownsPerRank;
   std::vector<std::pair<std::string, PetscReal>> results;
   std::vector<StepRecord>                        steps;
   PetscInt                                       restartedAt = -1; /* the checkpoint's step, -1: a fresh run */

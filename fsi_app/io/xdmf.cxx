@@ -1,4 +1,5 @@
 #include "xdmf.h"
+#include "discretization/conditions.h"
 #include "discretization/nodes.h"
 #include <petscsf.h>
 #include <petscviewerhdf5.h>
@@ -10,12 +11,23 @@ static const int XdmfNode[10] = {0, 1, 2, 3, 4 + 0, 4 + 3, 4 + 1, 4 + 2, 4 + 4, 
 
 /* Call f(point, global node number, owned) for every point that carries the field. */
 template <class F>
-static PetscErrorCode ForEachNode(const XdmfSeries &s, F f)
+static PetscErrorCode ForEachNode(const XdmfPart &s, F f)
 {
   PetscFunctionBegin;
   for (PetscInt p = 0; p < (PetscInt)s.node.size(); p++)
     if (s.node[p] >= 0) PetscCall(f(p, s.node[p], (PetscBool)s.owned[p]));
   PetscFunctionReturn(0);
+}
+
+/* One part's grid at frame k. */
+static void WriteGrid(FILE *fp, const XdmfPart &s, const std::string &h5, size_t k, PetscReal t, const char *indent)
+{
+  std::fprintf(fp, "%s<Grid Name=\"%s\" GridType=\"Uniform\">\n%s <Time Value=\"%.10g\"/>\n", indent, s.name.c_str(), indent, (double)t);
+  std::fprintf(fp, "%s <Topology TopologyType=\"Tetrahedron_10\" NumberOfElements=\"%" PetscInt_FMT "\">\n%s  <DataItem Dimensions=\"%" PetscInt_FMT " 10\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:%s/mesh/topology</DataItem>\n%s </Topology>\n", indent, s.nCells, indent, s.nCells, (int)sizeof(PetscInt), h5.c_str(), s.group.c_str(), indent);
+  std::fprintf(fp, "%s <Geometry GeometryType=\"XYZ\">\n%s  <DataItem Dimensions=\"%" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:%s/mesh/coordinates</DataItem>\n%s </Geometry>\n", indent, indent, s.nNodes, h5.c_str(), s.group.c_str(), indent);
+  for (const XdmfField &f : s.fields)
+    std::fprintf(fp, "%s <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n%s  <DataItem Dimensions=\"%" PetscInt_FMT "%s\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:%s/fields/%s_%zu</DataItem>\n%s </Attribute>\n", indent, f.name.c_str(), f.nc == 1 ? "Scalar" : "Vector", indent, s.nNodes, f.nc == 1 ? "" : " 3", h5.c_str(), s.group.c_str(), f.name.c_str(), k, indent);
+  std::fprintf(fp, "%s</Grid>\n", indent);
 }
 
 static PetscErrorCode WriteXdmf(const XdmfSeries &s)
@@ -30,14 +42,14 @@ static PetscErrorCode WriteXdmf(const XdmfSeries &s)
   const std::string tmp = s.xdmf + ".tmp";
   fp                    = std::fopen(tmp.c_str(), "w");
   PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot write the file", s.xdmf.c_str());
-  std::fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Temporal\">\n", s.fields[0].name.c_str());
+  std::fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Temporal\">\n", s.parts.size() == 1 ? s.parts[0].fields[0].name.c_str() : "solution");
   for (size_t k = 0; k < s.times.size(); k++) {
-    std::fprintf(fp, "   <Grid Name=\"frame %zu\" GridType=\"Uniform\">\n    <Time Value=\"%.10g\"/>\n", k, (double)s.times[k]);
-    std::fprintf(fp, "    <Topology TopologyType=\"Tetrahedron_10\" NumberOfElements=\"%" PetscInt_FMT "\">\n     <DataItem Dimensions=\"%" PetscInt_FMT " 10\" NumberType=\"Int\" Precision=\"%d\" Format=\"HDF\">%s:/mesh/topology</DataItem>\n    </Topology>\n", s.nCells, s.nCells, (int)sizeof(PetscInt), h5.c_str());
-    std::fprintf(fp, "    <Geometry GeometryType=\"XYZ\">\n     <DataItem Dimensions=\"%" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/mesh/coordinates</DataItem>\n    </Geometry>\n", s.nNodes, h5.c_str());
-    for (const XdmfField &f : s.fields)
-      std::fprintf(fp, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Node\">\n     <DataItem Dimensions=\"%" PetscInt_FMT "%s\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">%s:/fields/%s_%zu</DataItem>\n    </Attribute>\n", f.name.c_str(), f.nc == 1 ? "Scalar" : "Vector", s.nNodes, f.nc == 1 ? "" : " 3", h5.c_str(), f.name.c_str(), k);
-    std::fprintf(fp, "   </Grid>\n");
+    if (s.parts.size() == 1) WriteGrid(fp, s.parts[0], h5, k, s.times[k], "   ");
+    else {
+      std::fprintf(fp, "   <Grid Name=\"frame %zu\" GridType=\"Collection\" CollectionType=\"Spatial\">\n    <Time Value=\"%.10g\"/>\n", k, (double)s.times[k]);
+      for (const XdmfPart &p : s.parts) WriteGrid(fp, p, h5, k, s.times[k], "    ");
+      std::fprintf(fp, "   </Grid>\n");
+    }
   }
   std::fprintf(fp, "  </Grid>\n </Domain>\n</Xdmf>\n");
   std::fclose(fp);
@@ -47,18 +59,18 @@ static PetscErrorCode WriteXdmf(const XdmfSeries &s)
 
 /* The global numbering of the field's nodes: each rank numbers the node points it owns after
    those of lower ranks, and the point SF sends the numbers to the ranks that see them as ghosts. */
-static PetscErrorCode NumberNodes(XdmfSeries &s)
+static PetscErrorCode NumberNodes(DM dm, XdmfPart &s)
 {
-  MPI_Comm          comm = PetscObjectComm((PetscObject)s.dm);
+  MPI_Comm          comm = PetscObjectComm((PetscObject)dm);
   PetscSection      local;
   PetscSF           sf;
   PetscInt          pStart, pEnd, nleaves, owned = 0, first = 0;
   const PetscInt   *leaves;
 
   PetscFunctionBegin;
-  PetscCall(DMGetLocalSection(s.dm, &local));
-  PetscCall(DMPlexGetChart(s.dm, &pStart, &pEnd));
-  PetscCall(DMGetPointSF(s.dm, &sf));
+  PetscCall(DMGetLocalSection(dm, &local));
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  PetscCall(DMGetPointSF(dm, &sf));
   PetscCall(PetscSFGetGraph(sf, nullptr, &nleaves, &leaves, nullptr));
   s.owned.assign(pEnd, 1);
   for (PetscInt l = 0; l < nleaves; l++) s.owned[leaves ? leaves[l] : l] = 0;
@@ -84,9 +96,9 @@ static PetscErrorCode NumberNodes(XdmfSeries &s)
 }
 
 /* Node coordinates and the Tetrahedron_10 connectivity in global node numbers. */
-static PetscErrorCode MeshData(XdmfSeries &s, Vec *coordinates, IS *topology)
+static PetscErrorCode MeshData(DM dm, XdmfPart &s, Vec *coordinates, IS *topology)
 {
-  MPI_Comm comm = PetscObjectComm((PetscObject)s.dm);
+  MPI_Comm comm = PetscObjectComm((PetscObject)dm);
   Vec      coords;
   PetscInt rStart;
 
@@ -103,7 +115,7 @@ static PetscErrorCode MeshData(XdmfSeries &s, Vec *coordinates, IS *topology)
     PetscReal y[3];
     PetscFunctionBegin;
     if (own) {
-      PetscCall(NodePosition(s.dm, p, y));
+      PetscCall(NodePosition(dm, p, y));
       for (int d = 0; d < 3; d++) xa[3 * node - rStart + d] = y[d];
     }
     PetscFunctionReturn(0);
@@ -122,35 +134,41 @@ static PetscErrorCode MeshData(XdmfSeries &s, Vec *coordinates, IS *topology)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode XdmfOpen(const char *file, DM dm, const FieldCells &cells, const std::vector<std::pair<std::string, PetscInt>> &fields, const std::vector<PetscReal> &times, XdmfSeries &s)
+PetscErrorCode XdmfOpen(const char *file, DM dm, const std::vector<OutputPart> &parts, const std::vector<PetscReal> &times, XdmfSeries &s)
 {
-  PetscViewer viewer;
-  Vec         coords;
-  IS          topology;
-  std::string f = file;
+  PetscViewer viewer = nullptr;
+  std::string f      = file;
 
   PetscFunctionBegin;
   PetscCheck(f.size() > 5 && f.substr(f.size() - 5) == ".xdmf", PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_WRONG, "-output %s: name the file <name>.xdmf (the data go to <name>.h5)", file);
-  s.xdmf = f, s.h5 = f.substr(0, f.size() - 5) + ".h5", s.dm = dm, s.cells = &cells, s.times = times;
-  for (const auto &fl : fields) s.fields.push_back({fl.first, fl.second});
-  PetscCall(NumberNodes(s));
-  PetscCall(MeshData(s, &coords, &topology));
-  if (times.empty()) { /* a restart finds the mesh in the file */
-    PetscCall(PetscViewerHDF5Open(PetscObjectComm((PetscObject)dm), s.h5.c_str(), FILE_MODE_WRITE, &viewer));
-    PetscCall(PetscViewerHDF5PushGroup(viewer, "/mesh"));
-    PetscCall(VecView(coords, viewer));
-    PetscCall(ISView(topology, viewer));
-    PetscCall(PetscViewerHDF5PopGroup(viewer));
-    PetscCall(PetscViewerDestroy(&viewer));
-  } else PetscCall(WriteXdmf(s));
-  PetscCall(ISDestroy(&topology));
-  PetscCall(VecDestroy(&coords));
+  s.xdmf = f, s.h5 = f.substr(0, f.size() - 5) + ".h5", s.dm = dm, s.times = times;
+  if (times.empty()) PetscCall(PetscViewerHDF5Open(PetscObjectComm((PetscObject)dm), s.h5.c_str(), FILE_MODE_WRITE, &viewer)); /* a restart finds the meshes in the file */
+  for (const OutputPart &op : parts) {
+    XdmfPart p;
+    Vec      coords;
+    IS       topology;
+    p.name = op.name, p.group = parts.size() == 1 ? "" : "/" + op.name, p.cells = op.mesh;
+    for (const auto &fl : op.fields) p.fields.push_back({fl.first, fl.second});
+    PetscCall(NumberNodes(dm, p));
+    PetscCall(MeshData(dm, p, &coords, &topology));
+    if (viewer) {
+      PetscCall(PetscViewerHDF5PushGroup(viewer, (p.group + "/mesh").c_str()));
+      PetscCall(VecView(coords, viewer));
+      PetscCall(ISView(topology, viewer));
+      PetscCall(PetscViewerHDF5PopGroup(viewer));
+    }
+    PetscCall(ISDestroy(&topology));
+    PetscCall(VecDestroy(&coords));
+    s.parts.push_back(p);
+  }
+  PetscCall(PetscViewerDestroy(&viewer));
+  if (!times.empty()) PetscCall(WriteXdmf(s));
   PetscFunctionReturn(0);
 }
 
 /* The values of field f at node point p: its own dofs, or for a P1 field at an edge midpoint
    the mean of the edge's vertices (the linear interpolant there). */
-static PetscErrorCode NodeValues(const XdmfSeries &s, PetscSection local, const XdmfField &f, const PetscScalar *xa, PetscInt p, PetscScalar *v)
+static PetscErrorCode NodeValues(DM dm, PetscSection local, const XdmfField &f, const PetscScalar *xa, PetscInt p, PetscScalar *v)
 {
   PetscInt dof, off;
 
@@ -162,7 +180,7 @@ static PetscErrorCode NodeValues(const XdmfSeries &s, PetscSection local, const 
     PetscFunctionReturn(0);
   }
   const PetscInt *cone;
-  PetscCall(DMPlexGetCone(s.dm, p, &cone));
+  PetscCall(DMPlexGetCone(dm, p, &cone));
   for (PetscInt c = 0; c < f.nc; c++) v[c] = 0;
   for (int e = 0; e < 2; e++) {
     PetscCall(PetscSectionGetFieldOffset(local, cone[e], f.field, &off));
@@ -186,19 +204,21 @@ PetscErrorCode XdmfWriteFrame(XdmfSeries &s, PetscReal t, Vec x)
   PetscCall(InsertEssentialValues(s.dm, t, xl));
   PetscCall(VecGetArrayRead(xl, &xa));
   PetscCall(PetscViewerHDF5Open(PetscObjectComm((PetscObject)s.dm), s.h5.c_str(), FILE_MODE_APPEND, &viewer));
-  PetscCall(PetscViewerHDF5PushGroup(viewer, "/fields"));
-  for (XdmfField &f : s.fields) {
-    PetscInt     rStart;
-    PetscScalar *va;
-    PetscCall(VecGetOwnershipRange(f.values, &rStart, nullptr));
-    PetscCall(VecGetArray(f.values, &va));
-    PetscCall(ForEachNode(s, [&](PetscInt p, PetscInt node, PetscBool own) { return own ? NodeValues(s, local, f, xa, p, &va[f.nc * node - rStart]) : 0; }));
-    PetscCall(VecRestoreArray(f.values, &va));
-    PetscCall(PetscSNPrintf(dataset, sizeof(dataset), "%s_%zu", f.name.c_str(), s.times.size()));
-    PetscCall(PetscObjectSetName((PetscObject)f.values, dataset));
-    PetscCall(VecView(f.values, viewer));
+  for (XdmfPart &part : s.parts) {
+    PetscCall(PetscViewerHDF5PushGroup(viewer, (part.group + "/fields").c_str()));
+    for (XdmfField &f : part.fields) {
+      PetscInt     rStart;
+      PetscScalar *va;
+      PetscCall(VecGetOwnershipRange(f.values, &rStart, nullptr));
+      PetscCall(VecGetArray(f.values, &va));
+      PetscCall(ForEachNode(part, [&](PetscInt p, PetscInt node, PetscBool own) { return own ? NodeValues(s.dm, local, f, xa, p, &va[f.nc * node - rStart]) : 0; }));
+      PetscCall(VecRestoreArray(f.values, &va));
+      PetscCall(PetscSNPrintf(dataset, sizeof(dataset), "%s_%zu", f.name.c_str(), s.times.size()));
+      PetscCall(PetscObjectSetName((PetscObject)f.values, dataset));
+      PetscCall(VecView(f.values, viewer));
+    }
+    PetscCall(PetscViewerHDF5PopGroup(viewer));
   }
-  PetscCall(PetscViewerHDF5PopGroup(viewer));
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCall(VecRestoreArrayRead(xl, &xa));
   PetscCall(DMRestoreLocalVector(s.dm, &xl));
@@ -210,7 +230,8 @@ PetscErrorCode XdmfWriteFrame(XdmfSeries &s, PetscReal t, Vec x)
 PetscErrorCode XdmfClose(XdmfSeries &s)
 {
   PetscFunctionBegin;
-  for (XdmfField &f : s.fields) PetscCall(VecDestroy(&f.values));
+  for (XdmfPart &p : s.parts)
+    for (XdmfField &f : p.fields) PetscCall(VecDestroy(&f.values));
   PetscFunctionReturn(0);
 }
 

@@ -1,6 +1,7 @@
 #include "mesh.h"
 #include <petscsf.h>
 #include <metis.h>
+#include <algorithm>
 #include <fstream>
 
 namespace fsi {
@@ -69,8 +70,10 @@ static std::string GroupNames(DM dm)
 }
 
 /* Cells to ranks: METIS k-way on the dual graph (cells sharing a face), computed where the
-   serial mesh lives, handed to DMPlexDistribute through a shell partitioner. */
-static PetscErrorCode DistributeWithMetis(DM *dm)
+   serial mesh lives, handed to DMPlexDistribute through a shell partitioner. With two or more
+   regions, one balance constraint per region (a vertex weight per region: 1 on its cells), so
+   every rank gets its share of each region's cells, not only of all cells. */
+static PetscErrorCode DistributeWithMetis(DM *dm, const std::vector<std::string> &regions)
 {
   PetscMPIInt      size, rank;
   PetscInt         nv, *offsets, *adjacency;
@@ -86,11 +89,28 @@ static PetscErrorCode DistributeWithMetis(DM *dm)
   PetscCall(DMPlexCreatePartitionerGraph(*dm, 0, &nv, &offsets, &adjacency, &globalNumbering));
   std::vector<PetscInt> sizes(size, 0), points;
   if (nv) {
-    std::vector<idx_t> xadj(offsets, offsets + nv + 1), adj(adjacency, adjacency + offsets[nv]), p(nv);
-    idx_t n = (idx_t)nv, ncon = 1, np = size, cut, options[METIS_NOPTIONS];
+    std::vector<idx_t> xadj(offsets, offsets + nv + 1), adj(adjacency, adjacency + offsets[nv]), p(nv), weights;
+    idx_t n = (idx_t)nv, ncon = regions.size() > 1 ? (idx_t)regions.size() : 1, np = size, cut, options[METIS_NOPTIONS];
+    if (ncon > 1) {
+      PetscInt cStart, cEnd;
+      PetscCall(DMPlexGetHeightStratum(*dm, 0, &cStart, &cEnd));
+      PetscCheck(cEnd - cStart == nv, PETSC_COMM_SELF, PETSC_ERR_PLIB, "the partitioner graph has %" PetscInt_FMT " vertices for %" PetscInt_FMT " cells", nv, cEnd - cStart);
+      weights.assign(ncon * nv, 0);
+      for (idx_t r = 0; r < ncon; r++) {
+        DMLabel label;
+        PetscCall(DMGetLabel(*dm, regions[r].c_str(), &label));
+        for (PetscInt c = 0; c < nv && label; c++) {
+          PetscInt v;
+          PetscCall(DMLabelGetValue(label, cStart + c, &v));
+          if (v >= 0) weights[ncon * c + r] = 1;
+        }
+      }
+      for (PetscInt c = 0; c < nv; c++) /* a cell of no region counts for the first */
+        if (std::all_of(&weights[ncon * c], &weights[ncon * c] + ncon, [](idx_t w) { return w == 0; })) weights[ncon * c] = 1;
+    }
     METIS_SetDefaultOptions(options);
     options[METIS_OPTION_SEED] = 7;
-    const int status = METIS_PartGraphKway(&n, &ncon, xadj.data(), adj.data(), nullptr, nullptr, nullptr, &np, nullptr, nullptr, options, &cut, p.data());
+    const int status = METIS_PartGraphKway(&n, &ncon, xadj.data(), adj.data(), weights.empty() ? nullptr : weights.data(), nullptr, nullptr, &np, nullptr, nullptr, options, &cut, p.data());
     PetscCheck(status == METIS_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "METIS could not partition the %" PetscInt_FMT " cells of the mesh into %d parts (status %d)", nv, size, status);
     std::vector<std::vector<PetscInt>> byRank(size);
     for (PetscInt c = 0; c < nv; c++) byRank[p[c]].push_back(c);
@@ -110,7 +130,7 @@ static PetscErrorCode DistributeWithMetis(DM *dm)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vector<std::string> &required, DM *dm)
+PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vector<std::string> &required, const std::vector<std::string> &regions, DM *dm)
 {
   PetscBool set;
 
@@ -126,7 +146,7 @@ PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vecto
     PetscCall(CountLabel(*dm, g, 2, &n2));
     PetscCheck(n3 + n2 > 0, comm, PETSC_ERR_ARG_WRONG, "mesh file '%s' has no physical group '%s', which this scene needs (the file has: %s)", file.c_str(), g.c_str(), GroupNames(*dm).c_str());
   }
-  PetscCall(DistributeWithMetis(dm));
+  PetscCall(DistributeWithMetis(dm, regions));
   PetscFunctionReturn(0);
 }
 

@@ -1,6 +1,6 @@
 #include "system.h"
 #include "discretization/cells.h"
-#include "discretization/nodes.h"
+#include "discretization/conditions.h"
 
 namespace fsi {
 
@@ -15,7 +15,7 @@ static PetscErrorCode SystemResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
   PetscCall(VecZeroEntries(Fl));
   PetscCall(VecGetArrayRead(Xl, &x));
   PetscCall(VecGetArray(Fl, &f));
-  for (const BlockOps &b : s.blocks) PetscCall(b.residual(b.ctx, x, f));
+  for (Block *b : s.blocks) PetscCall(b->Residual(x, f));
   PetscCall(VecRestoreArray(Fl, &f));
   PetscCall(VecRestoreArrayRead(Xl, &x));
   PetscFunctionReturn(0);
@@ -30,7 +30,7 @@ static PetscErrorCode SystemJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
   PetscCall(InsertEssentialValues(dm, s.time, Xl));
   PetscCall(MatZeroEntries(P));
   PetscCall(VecGetArrayRead(Xl, &x));
-  for (const BlockOps &b : s.blocks) PetscCall(b.jacobian(b.ctx, x, P));
+  for (Block *b : s.blocks) PetscCall(b->Jacobian(x, P));
   PetscCall(VecRestoreArrayRead(Xl, &x));
   PetscCall(AssembleOperators(J, P));
   PetscFunctionReturn(0);

@@ -1,25 +1,17 @@
 /* The nonlinear system of a scene on one DM: the sum of the residuals and Jacobians of the
-   blocks the scene names (structure, fluid, geometry; later the coupling), each adding its
+   blocks the scene names (structure, fluid, geometry, coupling), each adding its
    rows into the local vectors and the matrix. The essential values are inserted once, at the
    time of the step being solved, before any block reads the state. */
 #pragma once
 
-#include <petscsnes.h>
+#include "solver/block.h"
 #include <vector>
 
 namespace fsi {
 
-struct BlockOps {
-  const char *name;
-  /* add the block's residual of local state x into f; add its Jacobian into P */
-  PetscErrorCode (*residual)(void *ctx, const PetscScalar *x, PetscScalar *f);
-  PetscErrorCode (*jacobian)(void *ctx, const PetscScalar *x, Mat P);
-  void *ctx;
-};
-
 struct System {
-  std::vector<BlockOps> blocks;
-  PetscReal             time = 0; /* of the step being solved (statics: the load fraction) */
+  std::vector<Block *> blocks;
+  PetscReal            time = 0; /* of the step being solved (statics: the load fraction) */
 };
 
 /* The system's residual and Jacobian become dm's DMSNES local callbacks; `s` must outlive dm. */

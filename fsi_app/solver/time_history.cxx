@@ -1,5 +1,5 @@
 #include "time_history.h"
-#include "discretization/nodes.h"
+#include "discretization/conditions.h"
 
 namespace fsi {
 

@@ -17,7 +17,7 @@ static void Cross(const PetscReal a[3], const PetscReal b[3], PetscReal c[3])
 /* At face point q: basis values N, their d/ds and d/dt (dN[a][0], dN[a][1]) for the face
    parametrised by (s, t) = (l[slot[1]], l[slot[2]]), and the tangents d/ds x, d/dt x of the
    reference face (dead pressure) or of the deformed one (follower). */
-static void FacePoint(const StructureBlock &sb, const CellGeometry &g, const CellFace &f, const PetscReal de[30], PetscInt q, PetscReal N[10], PetscReal dN[10][3], PetscReal ts[3], PetscReal tt[3])
+static void FacePoint(const StructureForms &sb, const CellGeometry &g, const CellFace &f, const PetscReal de[30], PetscInt q, PetscReal N[10], PetscReal dN[10][3], PetscReal ts[3], PetscReal tt[3])
 {
   PetscReal    l[4] = {0, 0, 0, 0};
   CellGeometry st   = g; /* "gradients" of the barycentric coordinates in (s, t) */
@@ -36,7 +36,7 @@ static void FacePoint(const StructureBlock &sb, const CellGeometry &g, const Cel
 }
 
 /* + int_faces p n . v: the pressure p pushes the wall along -n; n da = sign ts x tt ds dt. */
-static void PressureResidual(const StructureBlock &sb, const CellFace &f, const PetscReal de[30], PetscReal re[30])
+static void PressureResidual(const StructureForms &sb, const CellFace &f, const PetscReal de[30], PetscReal re[30])
 {
   const CellGeometry &g = sb.cells.geom[f.k];
   for (PetscInt q = 0; q < sb.faceRule.nq; q++) {
@@ -50,7 +50,7 @@ static void PressureResidual(const StructureBlock &sb, const CellFace &f, const 
 }
 
 /* The follower pressure's derivative: d(ts x tt)/d d_bk = dN_b,s e_k x tt + dN_b,t ts x e_k. */
-static void PressureTangent(const StructureBlock &sb, const CellFace &f, const PetscReal de[30], PetscReal K[900])
+static void PressureTangent(const StructureForms &sb, const CellFace &f, const PetscReal de[30], PetscReal K[900])
 {
   const CellGeometry &g = sb.cells.geom[f.k];
   for (PetscInt q = 0; q < sb.faceRule.nq; q++) {
@@ -70,7 +70,7 @@ static void PressureTangent(const StructureBlock &sb, const CellFace &f, const P
 }
 
 /* The law's parameters at a reference point: the fibre directions of the arterial wall. */
-static void PointParameters(const StructureBlock &sb, const CellGeometry &g, const PetscReal l[4], PetscReal p[MATERIAL_MAX_PARAM])
+static void PointParameters(const StructureForms &sb, const CellGeometry &g, const PetscReal l[4], PetscReal p[MATERIAL_MAX_PARAM])
 {
   for (int k = 0; k < MATERIAL_MAX_PARAM; k++) p[k] = sb.param[k];
   if (sb.fibreAngle >= 0) {
@@ -81,14 +81,14 @@ static void PointParameters(const StructureBlock &sb, const CellGeometry &g, con
 }
 
 /* rho / dt^2: the inertia term is rho M (sum_j c_j d^(n+1-j)) / dt^2 (0 in statics). */
-static PetscReal Inertia(const StructureBlock &sb)
+static PetscReal Inertia(const StructureForms &sb)
 {
   return sb.history && !sb.history->past.empty() ? sb.rho / (sb.history->dt * sb.history->dt) : 0.0;
 }
 
 PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
 {
-  const StructureBlock      &sb      = *(StructureBlock *)ctx;
+  const StructureForms      &sb      = *(StructureForms *)ctx;
   const PetscReal            inertia = Inertia(sb);
   std::vector<const PetscScalar *> past;
   PetscInt                   inverted = 0;
@@ -157,6 +157,7 @@ PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f
       Scatter(sb.cells, face.k, re, f);
     }
   for (size_t j = 0; j < past.size(); j++) PetscCall(VecRestoreArrayRead(sb.history->past[j], &past[j]));
+  ((StructureForms *)ctx)->inverted = inverted;
   if (inverted) {
     PetscCall(PetscInfo(sb.snes, "%" PetscInt_FMT " quadrature points with det F <= 0: the step is outside the domain of the law\n", inverted));
     if (sb.snes) PetscCall(SNESSetFunctionDomainError(sb.snes));
@@ -166,7 +167,7 @@ PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f
 
 PetscErrorCode StructureJacobian(void *ctx, const PetscScalar *x, Mat P)
 {
-  const StructureBlock &sb   = *(StructureBlock *)ctx;
+  const StructureForms &sb   = *(StructureForms *)ctx;
   const PetscReal       mass = Inertia(sb) * (sb.history ? sb.history->second[0] : 0.0);
 
   PetscFunctionBegin;

@@ -11,7 +11,7 @@
 
 namespace fsi {
 
-struct StructureBlock {
+struct StructureForms {
   MaterialLaw        law;
   PetscReal          param[MATERIAL_MAX_PARAM]; /* the law's parameters (see materials.h) */
   PetscReal          fibreAngle = -1;            /* >= 0: arterial fibres at this angle (radians) */
@@ -31,9 +31,10 @@ struct StructureBlock {
   std::vector<CellFace> tractionFaces;
   PetscReal          rho      = 0;               /* density: inertia when history has past states */
   const TimeHistory *history  = nullptr;
+  PetscInt           inverted = 0;               /* quadrature points with det F <= 0 in the last residual */
 };
 
-/* BlockOps of solver/system.h (the context is the StructureBlock). */
+/* BlockOps of solver/system.h (the context is the StructureForms). */
 PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f);
 PetscErrorCode StructureJacobian(void *ctx, const PetscScalar *x, Mat P);
 

@@ -22,7 +22,7 @@ int main(int argc, char **argv)
     required.push_back(s.substr(0, k));
     s = k == std::string::npos ? "" : s.substr(k + 1);
   }
-  PetscCall(fsi::LoadMesh(PETSC_COMM_WORLD, file, required, &dm));
+  PetscCall(fsi::LoadMesh(PETSC_COMM_WORLD, file, required, {}, &dm));
   PetscCall(DMGetNumLabels(dm, &n));
   for (PetscInt i = 0; i < n; i++) {
     const char *name;

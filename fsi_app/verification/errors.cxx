@@ -1,6 +1,6 @@
 #include "errors.h"
 #include "discretization/ale_map.h"
-#include "discretization/nodes.h"
+#include "discretization/conditions.h"
 
 namespace fsi {
 
@@ -48,6 +48,22 @@ PetscErrorCode ComputeErrors(DM dm, const FieldCells &cells, Vec X, PetscReal t,
   PetscCall(DMRestoreLocalVector(dm, &Xl));
   PetscCallMPI(MPIU_Allreduce(MPI_IN_PLACE, sum, 4, MPIU_REAL, MPIU_SUM, PetscObjectComm((PetscObject)dm)));
   e = {PetscSqrtReal(sum[0]), PetscSqrtReal(sum[1]), PetscSqrtReal(sum[2]), PetscSqrtReal(sum[3])};
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ReportErrors(const char *what, const Errors &e, RunReport &report)
+{
+  const std::string w = what[0] ? std::string(what) + "_" : "", space = what[0] ? " " : "";
+
+  PetscFunctionBegin;
+  for (const auto &n : {std::make_pair("L2", std::make_pair(e.l2, e.l2Exact)), std::make_pair("H1", std::make_pair(e.h1, e.h1Exact))}) {
+    const PetscReal   err = n.second.first, exact = n.second.second;
+    const std::string key = w + (n.first[0] == 'L' ? "l2" : "h1");
+    if (exact > 0) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s%s%s error %.6e relative %.6e\n", what, space.c_str(), n.first, (double)err, (double)(err / exact)));
+    else PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s%s%s error %.6e (the exact field is zero)\n", what, space.c_str(), n.first, (double)err));
+    report.results.push_back({key + "_error", err});
+    if (exact > 0) report.results.push_back({key + "_relative", err / exact});
+  }
   PetscFunctionReturn(0);
 }
 

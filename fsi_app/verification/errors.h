@@ -4,6 +4,7 @@
 #pragma once
 
 #include "discretization/cells.h"
+#include "io/report.h"
 
 namespace fsi {
 
@@ -16,5 +17,9 @@ struct Errors {
 
 /* X is global; its essential values are inserted at time t. */
 PetscErrorCode ComputeErrors(DM dm, const FieldCells &cells, Vec X, PetscReal t, ExactSolution exact, const void *ctx, Errors &e, const FieldCells *mesh = nullptr);
+
+/* Print "<what> L2 error ... relative ..." and the H1 line, and add <what>_l2_error, ... to the
+   report ("" for the block's main field: l2_error, ...). */
+PetscErrorCode ReportErrors(const char *what, const Errors &e, RunReport &report);
 
 } // namespace fsi

@@ -1,0 +1,70 @@
+/* The coupling block: the Lagrange multiplier lambda (P2, 3 components, on the interface
+   nodes) and the coupling rows of the monolithic system (the seed's eq. 9) for conforming
+   meshes, where C1|G = I, C3|G = -I, C4|G = I are nodal selections:
+     fluid momentum at an interface node      + lambda                  (C1^T lambda)
+     structure at an interface node           - lambda                  (C3^T lambda)
+     lambda row                               u - d_t d_s = 0           (C1 u + C2 d_s = C2 d_s^n)
+     geometry at an interface node            d_f - d_s = 0             (C4 d_s + H d_f, H|G = I)
+   d_t is the structure's own first difference (backward Euler or BDF2), so the interface
+   velocity is exactly the discrete wall velocity; lambda is the nodal force the fluid exerts
+   on the wall. Where u and d_s are both prescribed, lambda is too (its row would be empty).
+   It verifies the coupled problem: interface continuity and the fluid's volume balance. */
+#pragma once
+
+#include "fluid/block.h"
+#include "geometry/block.h"
+#include "scene.h"
+#include "solver/block.h"
+#include "structure/block.h"
+
+namespace fsi {
+
+class CouplingBlock : public Block {
+public:
+  CouplingBlock(const Scene &sc, StructureBlock &s, FluidBlock &f, GeometryBlock &g) : sc(sc), structure(s), fluid(f), geometry(g) {}
+  const char *Name() const override { return "coupling"; }
+  void        Groups(std::vector<std::string> &groups) const override { groups.push_back(sc.interface); }
+
+  PetscErrorCode AddFields(DM dm) override;
+  PetscErrorCode AddConditions(DM dm, Conditions &list) override;
+  PetscErrorCode SetUp(DM dm) override;
+  void           Attach(SNES, const TimeHistory *h) override { history = h; }
+
+  PetscErrorCode Residual(const PetscScalar *x, PetscScalar *f) override;
+  PetscErrorCode Jacobian(const PetscScalar *x, Mat P) override;
+
+  /* lambda joins the fluid's split: the fluid block with its interface rows (FaCSI's fluid(u, p, lambda)) */
+  const char           *SplitName() const override { return "fluid"; }
+  std::vector<PetscInt> SplitFields() const override { return {field}; }
+
+  PetscErrorCode AfterStep(DM dm, PetscInt step, PetscReal t, Vec x) override;
+  PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) override;
+
+  PetscInt field = -1; /* lambda */
+
+private:
+  /* An interface node this rank owns: local offsets and global indices (-1: constrained) of
+     its lambda, u, d_s and d_f. */
+  struct Node {
+    PetscInt local[4], global[4][3];
+  };
+  enum { LAMBDA = 0, U = 1, DS = 2, DF = 3 };
+
+  PetscErrorCode Continuity(DM dm, Vec x, PetscReal *velocity, PetscReal *geometric);
+  PetscErrorCode FluidVolume(DM dm, Vec x, PetscReal *volume);
+
+  const Scene       &sc;
+  StructureBlock    &structure;
+  FluidBlock        &fluid;
+  GeometryBlock     &geometry;
+  const TimeHistory *history = nullptr;
+  std::vector<Node>  nodes;
+  /* the volume balance per step: fluxes through inlet, outlet and interface, fluid volume */
+  struct Balance {
+    PetscReal t, in, out, wall, volume;
+  };
+  std::vector<Balance> balance;
+  PetscReal            volume0 = 0;
+};
+
+} // namespace fsi

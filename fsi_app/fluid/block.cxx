@@ -1,0 +1,170 @@
+#include "block.h"
+#include "verification/errors.h"
+#include "discretization/fields.h"
+#include "mesh/mesh.h"
+
+namespace fsi {
+
+/* The manufactured flows' Dirichlet faces: the boundary but the outlet, where the exact
+   traction fixes the pressure's constant. */
+static PetscErrorCode MMSDirichletFaces(const Scene &sc, DM dm, DMLabel *faces)
+{
+  DMLabel boundary, outlet;
+
+  PetscFunctionBegin;
+  PetscCall(DMGetLabel(dm, "boundary", &boundary));
+  PetscCall(DMGetLabel(dm, sc.outlet, &outlet));
+  PetscCall(DMCreateLabel(dm, "mms_dirichlet"));
+  PetscCall(DMGetLabel(dm, "mms_dirichlet", faces));
+  PetscCall(ForEachLabelPoint(boundary, {1}, [&](PetscInt face) -> PetscErrorCode {
+    PetscInt v;
+    PetscFunctionBegin;
+    PetscCall(DMLabelGetValue(outlet, face, &v));
+    if (v < 0) PetscCall(DMLabelSetValue(*faces, face, 1));
+    PetscFunctionReturn(0);
+  }));
+  PetscFunctionReturn(0);
+}
+
+void FluidBlock::Groups(std::vector<std::string> &groups) const
+{
+  groups.push_back(sc.fluidRegion);
+  for (const auto &g : SplitList(sc.noslip)) groups.push_back(g.substr(0, g.find(':')));
+  if (sc.inletPressure != 0 || sc.poiseuille[0] > 0 || sc.inflow) groups.push_back(sc.inlet);
+  if (sc.poiseuille[0] > 0 || sc.mms) groups.push_back(sc.outlet);
+}
+
+PetscErrorCode FluidBlock::AddFields(DM dm)
+{
+  PetscFunctionBegin;
+  PetscCall(AddLagrangeField(dm, "velocity", sc.fluidRegion, 3, 2, &velocity));
+  PetscCall(AddLagrangeField(dm, "pressure", sc.fluidRegion, 1, 1, &pressure));
+  flow.kind = sc.mmsFlow, flow.rho = sc.rhoFluid, flow.mu = sc.muFluid, flow.ramp = sc.mmsRamp, flow.dynamic = sc.Dynamic();
+  flow.motion = geometry && !geometry->Coupled() ? &geometry->motion : nullptr;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FluidBlock::AddConditions(DM dm, Conditions &list)
+{
+  PetscFunctionBegin;
+  if (sc.inflow) PetscCall(AddDirichlet(dm, list, sc.inlet, velocity, "-fluid_inlet", sc.inflowVelocity)); /* first: the no-slip rim wins */
+  PetscCall(AddDirichlet(dm, list, sc.noslip, velocity, "-fluid_noslip"));
+  if (sc.mms) {
+    Condition      c;
+    const FlowMMS *m = &flow;
+    PetscCall(MMSDirichletFaces(sc, dm, &c.label));
+    c.name = "-mms (the manufactured velocity on the boundary but the outlet)", c.field = velocity;
+    c.value = [m](const PetscReal x[3], PetscReal t, PetscScalar *v) { FlowMMSVelocityBC(3, t, x, 3, v, (void *)m); };
+    list.push_back(c);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FluidBlock::SetUp(DM dm)
+{
+  FluidForms &fb = forms;
+  DMLabel     region;
+
+  PetscFunctionBegin;
+  PetscCall(GetRegionLabel(dm, sc.fluidRegion, &region));
+  PetscCall(FieldCellsCreate(dm, region, velocity, fb.velocity));
+  PetscCall(FieldCellsCreate(dm, region, pressure, fb.pressure));
+  fb.mesh = geometry ? &geometry->forms.cells : nullptr;
+  fb.rho = sc.rhoFluid, fb.mu = sc.muFluid;
+  PetscCall(CreateP2Rule(5, fb.rule));
+  PetscCall(CreateFaceRule(4, fb.faceRule));
+  auto addTraction = [&](const char *group, Traction t) -> PetscErrorCode {
+    DMLabel       label;
+    TractionGroup tg;
+    PetscFunctionBegin;
+    PetscCall(DMGetLabel(dm, group, &label));
+    PetscCall(CellFacesCreate(dm, fb.velocity, label, tg.faces));
+    tg.traction = t;
+    fb.tractions.push_back(tg);
+    PetscFunctionReturn(0);
+  };
+  for (auto g : {std::make_pair(sc.inlet, &inletFaces), std::make_pair(sc.outlet, &outletFaces), std::make_pair(sc.interface, &interfaceFaces)}) { /* the fluxes a run reports */
+    DMLabel label;
+    PetscCall(DMGetLabel(dm, g.first, &label));
+    if (label) PetscCall(CellFacesCreate(dm, fb.velocity, label, *g.second));
+  }
+  if (sc.mms) {
+    const FlowMMS *m = &flow;
+    PetscCall(addTraction(sc.outlet, [m](const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal tr[3]) { FlowMMSTraction(*m, x, n, t, tr); }));
+    fb.force = [m](const PetscReal x[3], PetscReal t, PetscReal f[3]) { FlowMMSForce(*m, x, t, f); };
+  } else if (sc.poiseuille[0] > 0) { /* the exact flow's traction sigma n at both ends */
+    const Poiseuille p = {sc.poiseuille[0], sc.poiseuille[1], sc.poiseuille[2], sc.muFluid};
+    for (const char *g : {sc.inlet, sc.outlet}) PetscCall(addTraction(g, [p](const PetscReal x[3], const PetscReal n[3], PetscReal, PetscReal t[3]) { PoiseuilleTraction(p, x, n, t); }));
+  } else if (sc.inletPressure != 0) {
+    const PetscReal p = sc.inletPressure, until = sc.pulseEnd;
+    const PetscBool steady = (PetscBool)!sc.Dynamic(); /* time is then the load fraction: continuation in p */
+    PetscCall(addTraction(sc.inlet, [p, until, steady](const PetscReal *, const PetscReal n[3], PetscReal time, PetscReal t[3]) {
+      const PetscReal pt = steady ? p * time : (until == 0 || time <= until + 1e-12 ? p : 0.0);
+      for (int d = 0; d < 3; d++) t[d] = -pt * n[d];
+    }));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FluidBlock::InitialState(DM dm, Vec x, PetscBool *set)
+{
+  Vec          local;
+  PetscScalar *a;
+
+  PetscFunctionBegin;
+  *set = (PetscBool)(sc.mms && sc.Dynamic()); /* the manufactured flow at t = 0, held since t = -infinity (uniform: nonzero; ramped: zero) */
+  if (!*set) PetscFunctionReturn(0);
+  PetscCall(DMGetLocalVector(dm, &local));
+  PetscCall(VecSet(local, 0.0));
+  PetscCall(VecGetArray(local, &a));
+  SetNodalValues(forms.velocity, [&](const PetscReal X[3], PetscScalar *u) { FlowMMSVelocityBC(3, 0.0, X, 3, u, (void *)&flow); }, a);
+  PetscCall(VecRestoreArray(local, &a));
+  PetscCall(DMLocalToGlobal(dm, local, INSERT_VALUES, x));
+  PetscCall(DMRestoreLocalVector(dm, &local));
+  PetscFunctionReturn(0);
+}
+
+void FluidBlock::Output(std::vector<OutputPart> &parts) const
+{
+  OutputPart p{"fluid", &forms.velocity, {{"velocity", velocity}, {"pressure", pressure}}};
+  if (geometry) p.fields.push_back({"mesh_displacement", geometry->field}); /* ParaView: Warp By Vector shows the moved mesh */
+  parts.push_back(p);
+}
+
+std::string FluidBlock::InvertedCause() const
+{
+  char cause[256];
+  if (!forms.inverted) return "";
+  if (geometry && geometry->Coupled()) return "a cell of the moved fluid mesh inverted (J <= 0): the wall moved too far in one step for the harmonic extension of its displacement";
+  PetscSNPrintf(cause, sizeof(cause), "a cell of the moved fluid mesh inverted (J <= 0): the prescribed interface displacement is too large for its harmonic extension; reduce -geometry_amplitude (%g now)", (double)sc.geometryAmplitude);
+  return cause;
+}
+
+PetscErrorCode FluidBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
+{
+  Errors     e;
+  Poiseuille p = {sc.poiseuille[0], sc.poiseuille[1], sc.poiseuille[2], sc.muFluid};
+  PetscReal  in = 0, out = 0; /* fluxes through inlet and outlet */
+
+  PetscFunctionBegin;
+  /* equal to the solver's tolerance without a moving wall: div u is orthogonal to the constants */
+  PetscCall(FluidFlux(dm, forms, inletFaces, x, &in));
+  PetscCall(FluidFlux(dm, forms, outletFaces, x, &out));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "flux inlet %.6e outlet %.6e\n", (double)in, (double)out));
+  report.results.insert(report.results.end(), {{"inlet_flux", in}, {"outlet_flux", out}});
+  if (sc.mms) {
+    PetscCall(ComputeErrors(dm, forms.pressure, x, t, FlowMMSPressure, &flow, e, forms.mesh));
+    PetscCall(ReportErrors("pressure", e, report));
+    PetscCall(ComputeErrors(dm, forms.velocity, x, t, FlowMMSVelocity, &flow, e, forms.mesh));
+    PetscCall(ReportErrors("", e, report));
+  } else if (p.R > 0) {
+    const PetscReal exact = PETSC_PI * PetscPowReal(p.R, 4) * p.dp / (8 * p.mu * p.L), Q = out;
+    PetscCall(ComputeErrors(dm, forms.velocity, x, t, PoiseuilleVelocity, &p, e, forms.mesh));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "flux %.6e exact %.6e relative error %.3e\n", (double)Q, (double)exact, (double)PetscAbsReal(Q / exact - 1)));
+    report.results.insert(report.results.end(), {{"flux", Q}, {"flux_relative_error", PetscAbsReal(Q / exact - 1)}});
+    PetscCall(ReportErrors("", e, report));
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace fsi

@@ -1,0 +1,70 @@
+/* A block of the monolithic system (structure, fluid, geometry, coupling): it owns everything
+   about itself — its fields, essential conditions, cells, rows of the residual and Jacobian,
+   its split of the preconditioner, its output and its verification. A scene is a list of
+   blocks (blocks.h); the application only sums them. The stages are called in this order:
+   Groups (before the mesh is read), AddFields, AddConditions (every field exists), SetUp (the
+   section exists), then per step SetTime, Predict, residuals and Jacobians, AfterStep; Results
+   at the end. */
+#pragma once
+
+#include "discretization/cells.h"
+#include "discretization/conditions.h"
+#include "io/report.h"
+#include "solver/time_history.h"
+#include <petscsnes.h>
+#include <string>
+#include <vector>
+
+namespace fsi {
+
+/* Fields written on the P2 cells of one region: one part of the XDMF output. */
+struct OutputPart {
+  std::string                                   name; /* "fluid", "wall" */
+  const FieldCells                             *mesh = nullptr;
+  std::vector<std::pair<std::string, PetscInt>> fields;
+};
+
+class Block {
+public:
+  virtual ~Block() = default;
+  virtual const char *Name() const = 0;
+  /* The mesh groups it needs (checked when the mesh is read), and its region ("": none, or
+     the whole mesh): the partition balances the cells of every region. */
+  virtual void        Groups(std::vector<std::string> &groups) const = 0;
+  virtual std::string Region() const { return ""; }
+
+  virtual PetscErrorCode AddFields(DM dm) = 0;
+  virtual PetscErrorCode AddConditions(DM dm, Conditions &list) { return 0; }
+  virtual PetscErrorCode SetUp(DM dm) = 0;
+  /* The Newton solver (told when a cell inverts) and the time scheme's past states. */
+  virtual void Attach(SNES snes, const TimeHistory *history) {}
+
+  /* Its rows: add to the local residual f and into the matrix P (local state x). */
+  virtual PetscErrorCode Residual(const PetscScalar *x, PetscScalar *f) = 0;
+  virtual PetscErrorCode Jacobian(const PetscScalar *x, Mat P) = 0;
+  virtual PetscErrorCode SetTime(PetscReal t) { return 0; }
+  /* The first iterate of the step to time t (global x holds the last state). */
+  virtual PetscErrorCode Predict(PetscReal t, Vec x) { return 0; }
+  /* The state at t = 0, held since t = -infinity (global x is zero on entry); *set if it is not zero. */
+  virtual PetscErrorCode InitialState(DM dm, Vec x, PetscBool *set) { return *set = PETSC_FALSE, 0; }
+
+  /* Its part of PCFIELDSPLIT: these fields, in the split of this name (blocks may share one). */
+  virtual std::vector<PetscInt> SplitFields() const = 0;
+  virtual const char           *SplitName() const { return Name(); }
+  /* Linear rows (a dynamic scene of linear blocks factors its operator once); rows that are
+     the gradient of an energy (the critical-point line search applies). */
+  virtual PetscBool Linear() const { return PETSC_FALSE; }
+  virtual PetscBool HasEnergy() const { return PETSC_FALSE; }
+  /* The preconditioner of the whole system when the block is the scene's only one. */
+  virtual PetscErrorCode ConfigurePC(DM dm, PC pc, Mat J) { return 0; }
+
+  virtual void Output(std::vector<OutputPart> &parts) const {}
+  /* The field a run's summary line reports the largest value of ("displacement", "velocity"). */
+  virtual const char *Headline(PetscInt *field) const { return nullptr; }
+  /* Why the last residual had no value (an inverted cell), "" if it had. */
+  virtual std::string InvertedCause() const { return ""; }
+  virtual PetscErrorCode AfterStep(DM dm, PetscInt step, PetscReal t, Vec x) { return 0; }
+  virtual PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) { return 0; }
+};
+
+} // namespace fsi
