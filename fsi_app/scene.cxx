@@ -66,6 +66,7 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(PetscOptionsString("-geometry_slip", "groups where the mesh slides: the listed components are zero (planar ends: group:z)", nullptr, sc.slip, sc.slip, sizeof(sc.slip), nullptr));
   PetscCall(PetscOptionsReal("-geometry_amplitude", "amplitude a of the prescribed interface displacement a s(t) (x^2 - y^2, -2xy, 0) (-physics geometry, -fluid_moving_mesh)", nullptr, sc.geometryAmplitude, &sc.geometryAmplitude, nullptr));
   PetscCall(PetscOptionsReal("-geometry_ramp", "the prescribed interface displacement rises as s(t) = sin^2(pi t / 2T) over this time T (s); 0: at once", nullptr, sc.geometryRamp, &sc.geometryRamp, nullptr));
+  PetscCall(PetscOptionsBool("-fluid_shape_derivatives", "on a moving mesh, the fluid's Jacobian holds its derivative in the mesh displacement (exact Newton); false: quasi-Newton", nullptr, sc.shapeDerivatives, &sc.shapeDerivatives, nullptr));
   PetscCall(PetscOptionsBool("-fluid_moving_mesh", "-physics fluid: the mesh moves (ALE) with the harmonic extension of the prescribed interface displacement", nullptr, sc.movingMesh, &sc.movingMesh, nullptr));
   n = 3;
   PetscCall(PetscOptionsRealArray("-poiseuille", "verification: Hagen-Poiseuille flow in a tube of radius R and length L along z driven by a pressure drop: R,L,dp", nullptr, sc.poiseuille, &n, &set));

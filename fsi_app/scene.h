@@ -52,6 +52,7 @@ struct Scene {
   PetscReal geometryAmplitude  = 0.01;               /* of the prescribed interface displacement */
   PetscReal geometryRamp       = 0;                  /* it rises smoothly over this time (0: at once) */
   PetscBool movingMesh         = PETSC_FALSE;        /* -physics fluid: the mesh moves (ALE) with the geometry block */
+  PetscBool shapeDerivatives   = PETSC_TRUE;         /* the fluid's Jacobian holds D_{d_f} R (exact Newton) */
   /* time, or load increments in statics */
   PetscReal  dt = 0, tFinal = 0.01;
   PetscInt   loadSteps = 1, maxCuts = 4;

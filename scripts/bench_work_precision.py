@@ -40,7 +40,7 @@ FAMILIES = {
     "fluid": {
         "out": "work_precision_fluid", "unknowns": ("fluid", "pressure", "geometry"), "solver": "-ksp_rtol 1e-8",
         "pcs": {
-            "fieldsplit: GAMG | Schur selfp, BoomerAMG": "-fieldsplit_1_pc_type fieldsplit",
+            "fieldsplit: GAMG | Schur selfp, BoomerAMG": "-fieldsplit_fluid_pc_type fieldsplit",
             "fieldsplit: GAMG | flow by MUMPS": "",
             "MUMPS (direct, monolithic)": "-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps",
         },

@@ -190,50 +190,51 @@ PetscErrorCode CouplingBlock::Continuity(DM dm, Vec, PetscReal *velocity, PetscR
   PetscFunctionReturn(0);
 }
 
-/* The moved fluid region's volume, int J dX (exact: J is a polynomial of degree 3). */
-PetscErrorCode CouplingBlock::FluidVolume(DM dm, Vec x, PetscReal *volume)
+/* The moved fluid region's volume int J dX (exact: J is a polynomial of degree 3) for the
+   local state x. */
+PetscErrorCode CouplingBlock::FluidVolume(DM dm, const PetscScalar *x, PetscReal *volume)
 {
-  const FieldCells  &cells = geometry.forms.cells;
-  const P2Rule      &rule  = fluid.forms.rule;
-  Vec                Xl;
-  const PetscScalar *xa;
-  PetscReal          sum = 0;
+  const FieldCells &cells = geometry.forms.cells;
+  const P2Rule     &rule  = fluid.forms.rule;
+  PetscReal         sum   = 0;
 
   PetscFunctionBegin;
-  PetscCall(DMGetLocalVector(dm, &Xl));
-  PetscCall(DMGlobalToLocal(dm, x, INSERT_VALUES, Xl));
-  PetscCall(VecGetArrayRead(Xl, &xa));
   for (PetscInt k = 0; k < cells.Size(); k++) {
     PetscReal de[30];
-    Gather(cells, k, xa, de);
+    Gather(cells, k, x, de);
     for (PetscInt q = 0; q < rule.nq; q++) {
       MovedPoint m;
       sum += rule.w[q] * cells.geom[k].detE * MovePoint(cells.geom[k], de, &rule.lambda[4 * q], &rule.N[10 * q], m);
     }
   }
-  PetscCall(VecRestoreArrayRead(Xl, &xa));
-  PetscCall(DMRestoreLocalVector(dm, &Xl));
   PetscCallMPI(MPIU_Allreduce(&sum, volume, 1, MPIU_REAL, MPIU_SUM, PetscObjectComm((PetscObject)dm)));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CouplingBlock::AfterStep(DM dm, PetscInt step, PetscReal t, Vec x)
+PetscErrorCode CouplingBlock::AfterStep(DM dm, PetscInt, PetscReal t, Vec x)
 {
   Balance b;
 
   PetscFunctionBegin;
-  if (balance.empty()) { /* the reference volume: a start at rest on the undeformed mesh */
-    Vec zero;
-    PetscCall(DMGetGlobalVector(dm, &zero));
-    PetscCall(VecZeroEntries(zero));
-    PetscCall(FluidVolume(dm, zero, &volume0));
-    PetscCall(DMRestoreGlobalVector(dm, &zero));
-  }
+  if (balance.empty()) /* the volumes before the first step recorded (the start, or a checkpoint's state) */
+    for (size_t j = 1; j < history->past.size(); j++) {
+      const PetscScalar *y;
+      PetscReal          v;
+      PetscCall(VecGetArrayRead(history->past[j], &y));
+      PetscCall(FluidVolume(dm, y, &v));
+      PetscCall(VecRestoreArrayRead(history->past[j], &y));
+      before.push_back(v);
+    }
   b.t = t;
   PetscCall(FluidFlux(dm, fluid.forms, fluid.inletFaces, x, &b.in));
   PetscCall(FluidFlux(dm, fluid.forms, fluid.outletFaces, x, &b.out));
   PetscCall(FluidFlux(dm, fluid.forms, fluid.interfaceFaces, x, &b.wall));
-  PetscCall(FluidVolume(dm, x, &b.volume));
+  {
+    const PetscScalar *y; /* past[0] is x with its essential values */
+    PetscCall(VecGetArrayRead(history->past[0], &y));
+    PetscCall(FluidVolume(dm, y, &b.volume));
+    PetscCall(VecRestoreArrayRead(history->past[0], &y));
+  }
   b.in = -b.in; /* into the fluid */
   balance.push_back(b);
   PetscFunctionReturn(0);
@@ -252,7 +253,7 @@ PetscErrorCode CouplingBlock::Results(DM dm, Vec x, PetscReal t, RunReport &repo
   for (size_t k = 0; k < balance.size(); k++) {
     const Balance &b = balance[k];
     PetscReal      dV = history->first[0] * b.volume;
-    for (PetscInt j = 1; j < 3 && history->first[j] != 0; j++) dV += history->first[j] * ((PetscInt)k - j >= 0 ? balance[k - j].volume : volume0);
+    for (PetscInt j = 1; j < 3 && history->first[j] != 0; j++) dV += history->first[j] * ((PetscInt)k - j >= 0 ? balance[k - j].volume : before[j - k - 1]);
     dV /= history->dt;
     mass    = PetscMax(mass, PetscAbsReal(b.in - b.out - b.wall));
     rate    = PetscMax(rate, PetscAbsReal(b.wall - dV));

@@ -51,7 +51,7 @@ private:
   enum { LAMBDA = 0, U = 1, DS = 2, DF = 3 };
 
   PetscErrorCode Continuity(DM dm, Vec x, PetscReal *velocity, PetscReal *geometric);
-  PetscErrorCode FluidVolume(DM dm, Vec x, PetscReal *volume);
+  PetscErrorCode FluidVolume(DM dm, const PetscScalar *x, PetscReal *volume);
 
   const Scene       &sc;
   StructureBlock    &structure;
@@ -63,8 +63,8 @@ private:
   struct Balance {
     PetscReal t, in, out, wall, volume;
   };
-  std::vector<Balance> balance;
-  PetscReal            volume0 = 0;
+  std::vector<Balance>   balance;
+  std::vector<PetscReal> before; /* volumes of the states before the first step recorded */
 };
 
 } // namespace fsi

@@ -101,6 +101,48 @@ static PetscErrorCode ReportInverted(const FluidForms &fb, PetscInt inverted)
   PetscFunctionReturn(0);
 }
 
+/* The volume terms of cell k for state s: ru (30) and rp (4); returns the number of
+   quadrature points where the moved cell is inverted. */
+static PetscInt CellResidual(const FluidForms &fb, PetscInt k, const CellState &s, PetscReal ru[30], PetscReal rp[4])
+{
+  const CellGeometry &g        = fb.velocity.geom[k];
+  PetscInt            inverted = 0;
+  for (PetscInt q = 0; q < fb.rule.nq; q++) {
+    const PetscReal *l = &fb.rule.lambda[4 * q], *N = &fb.rule.N[10 * q];
+    MovedPoint       m;
+    FlowPoint        p;
+    if (MovePoint(g, fb.mesh ? s.d : nullptr, l, N, m) <= 0) {
+      inverted++;
+      continue;
+    }
+    Evaluate(s, N, l, m, p);
+    const PetscReal w   = fb.rule.w[q] * g.detE * m.J;
+    const PetscReal div = p.G[0][0] + p.G[1][1] + p.G[2][2];
+    PetscReal       r[3], b[3] = {0, 0, 0};
+    if (fb.force) fb.force(m.x, fb.time, b);
+    for (int i = 0; i < 3; i++) r[i] = fb.rho * (p.dudt[i] + (p.u[0] - p.w[0]) * p.G[i][0] + (p.u[1] - p.w[1]) * p.G[i][1] + (p.u[2] - p.w[2]) * p.G[i][2]) - b[i];
+    for (int a = 0; a < 10; a++)
+      for (int i = 0; i < 3; i++) {
+        PetscReal v = r[i] * N[a] - p.p * m.dN[a][i];
+        for (int j = 0; j < 3; j++) v += fb.mu * (p.G[i][j] + p.G[j][i]) * m.dN[a][j];
+        ru[3 * a + i] += w * v;
+      }
+    for (int c = 0; c < 4; c++) rp[c] -= w * l[c] * div;
+  }
+  return inverted;
+}
+
+/* - int t . v over one traction face of the mesh moved by de (nullptr: fixed). */
+static void FaceResidual(const FluidForms &fb, const TractionGroup &tg, const CellFace &face, const PetscReal *de, PetscReal ru[30])
+{
+  ForEachFacePoint(fb, face, de, [&](const PetscReal N[10], const PetscReal xq[3], const PetscReal n[3], PetscReal w) {
+    PetscReal t[3];
+    tg.traction(xq, n, fb.time, t);
+    for (int a = 0; a < 10; a++)
+      for (int i = 0; i < 3; i++) ru[3 * a + i] -= w * t[i] * N[a];
+  });
+}
+
 PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
 {
   const FluidForms                &fb = *(FluidForms *)ctx;
@@ -110,32 +152,10 @@ PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
   PetscFunctionBegin;
   PetscCall(GetPast(fb, past));
   for (PetscInt k = 0; k < fb.velocity.Size(); k++) {
-    const CellGeometry &g = fb.velocity.geom[k];
-    CellState           s;
-    PetscReal           ru[30] = {0}, rp[4] = {0};
+    CellState s;
+    PetscReal ru[30] = {0}, rp[4] = {0};
     GatherState(fb, k, x, past, s);
-    for (PetscInt q = 0; q < fb.rule.nq; q++) {
-      const PetscReal *l = &fb.rule.lambda[4 * q], *N = &fb.rule.N[10 * q];
-      MovedPoint       m;
-      FlowPoint        p;
-      if (MovePoint(g, fb.mesh ? s.d : nullptr, l, N, m) <= 0) {
-        inverted++;
-        continue;
-      }
-      Evaluate(s, N, l, m, p);
-      const PetscReal w   = fb.rule.w[q] * g.detE * m.J;
-      const PetscReal div = p.G[0][0] + p.G[1][1] + p.G[2][2];
-      PetscReal       r[3], b[3] = {0, 0, 0};
-      if (fb.force) fb.force(m.x, fb.time, b);
-      for (int i = 0; i < 3; i++) r[i] = fb.rho * (p.dudt[i] + (p.u[0] - p.w[0]) * p.G[i][0] + (p.u[1] - p.w[1]) * p.G[i][1] + (p.u[2] - p.w[2]) * p.G[i][2]) - b[i];
-      for (int a = 0; a < 10; a++)
-        for (int i = 0; i < 3; i++) {
-          PetscReal v = r[i] * N[a] - p.p * m.dN[a][i];
-          for (int j = 0; j < 3; j++) v += fb.mu * (p.G[i][j] + p.G[j][i]) * m.dN[a][j];
-          ru[3 * a + i] += w * v;
-        }
-      for (int c = 0; c < 4; c++) rp[c] -= w * l[c] * div;
-    }
+    inverted += CellResidual(fb, k, s, ru, rp);
     Scatter(fb.velocity, k, ru, f);
     Scatter(fb.pressure, k, rp, f);
   }
@@ -143,18 +163,35 @@ PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
     for (const CellFace &face : tg.faces) {
       PetscReal ru[30] = {0}, de[30];
       if (fb.mesh) Gather(*fb.mesh, face.k, x, de);
-      ForEachFacePoint(fb, face, fb.mesh ? de : nullptr, [&](const PetscReal N[10], const PetscReal xq[3], const PetscReal n[3], PetscReal w) {
-        PetscReal t[3];
-        tg.traction(xq, n, fb.time, t);
-        for (int a = 0; a < 10; a++)
-          for (int i = 0; i < 3; i++) ru[3 * a + i] -= w * t[i] * N[a];
-      });
+      FaceResidual(fb, tg, face, fb.mesh ? de : nullptr, ru);
       Scatter(fb.velocity, face.k, ru, f);
     }
   PetscCall(RestorePast(fb, past));
   ((FluidForms *)ctx)->inverted = inverted;
   PetscCall(ReportInverted(fb, inverted));
   PetscFunctionReturn(0);
+}
+
+/* The shape derivatives D_{d_f} R of cell k: the derivative of its volume and traction terms
+   (rows: 30 velocity, 4 pressure dofs) in its 30 mesh displacement dofs, by central
+   differences of the element residual (the mesh velocity w moves with d_f by c_0 / dt). The
+   step is 1e-6 of the cell's size: truncation ~ 1e-12, round-off ~ 1e-10 relative. */
+static void ShapeDerivatives(const FluidForms &fb, PetscInt k, const CellState &s, const std::vector<std::pair<const TractionGroup *, const CellFace *>> &faces, PetscReal K[34 * 30])
+{
+  const CellGeometry &g    = fb.velocity.geom[k];
+  const PetscReal     h    = 1e-6 * PetscCbrtReal(g.detE), wRate = fb.history && !fb.history->past.empty() ? fb.history->first[0] / fb.history->dt : 0.0;
+  for (int j = 0; j < 30; j++) {
+    PetscReal r[2][34];
+    for (int side = 0; side < 2; side++) {
+      CellState t = s;
+      const PetscReal e = side ? -h : h;
+      t.d[j] += e, t.w[j] += wRate * e;
+      for (int i = 0; i < 34; i++) r[side][i] = 0;
+      CellResidual(fb, k, t, r[side], r[side] + 30);
+      for (const auto &tf : faces) FaceResidual(fb, *tf.first, *tf.second, t.d, r[side]);
+    }
+    for (int i = 0; i < 34; i++) K[i * 30 + j] = (r[0][i] - r[1][i]) / (2 * h);
+  }
 }
 
 /* Element matrix of the 30 velocity and 4 pressure dofs (rows and columns in that order). */
@@ -167,6 +204,10 @@ PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P)
   PetscFunctionBegin;
   PetscCall(GetPast(fb, past));
   const PetscReal mass = past.empty() ? 0.0 : fb.rho * fb.history->first[0] / fb.history->dt; /* d(rho d_t u)/du */
+  std::vector<std::vector<std::pair<const TractionGroup *, const CellFace *>>> cellFaces(fb.shapeDerivatives ? fb.velocity.Size() : 0);
+  for (const TractionGroup &tg : fb.tractions) /* the traction faces of each cell: they move with its d_f */
+    for (const CellFace &face : tg.faces)
+      if (fb.shapeDerivatives) cellFaces[face.k].push_back({&tg, &face});
   for (PetscInt k = 0; k < fb.velocity.Size(); k++) {
     const CellGeometry &g = fb.velocity.geom[k];
     CellState           s;
@@ -203,6 +244,11 @@ PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P)
           }
     }
     PetscCall(MatSetValues(P, n, idx, n, idx, K, ADD_VALUES));
+    if (fb.shapeDerivatives && fb.mesh) {
+      PetscReal S[34 * 30];
+      ShapeDerivatives(fb, k, s, cellFaces[k], S);
+      PetscCall(MatSetValues(P, n, idx, 30, &fb.mesh->global[30 * k], S, ADD_VALUES));
+    }
   }
   PetscCall(RestorePast(fb, past));
   PetscFunctionReturn(0);

@@ -7,9 +7,11 @@
    with d_t u the fully implicit difference (solver/time_history.h) of the nodal values, which
    move with the mesh (the time derivative at fixed X), w the same difference of d_f (the mesh
    velocity), t a prescribed traction on groups of faces (natural: stress-free) and f a body
-   force (manufactured solutions). The Jacobian is exact in (u, p), convection included; the
-   shape derivatives (with respect to d_f) are not assembled: -snes_mf_operator gives Newton
-   the exact derivative with this matrix as preconditioner. */
+   force (manufactured solutions). The Jacobian is exact in (u, p), convection included, and
+   holds the shape derivatives (in d_f: the moved geometry, the mesh velocity, the moved
+   traction faces) if asked, by central differences of the element residual; without them
+   Newton is a quasi-Newton method on a moving mesh (-snes_mf_operator restores the exact
+   derivative with this matrix as preconditioner). */
 #pragma once
 
 #include "discretization/cells.h"
@@ -40,6 +42,7 @@ struct FluidForms {
   const TimeHistory         *history = nullptr;
   SNES                       snes    = nullptr; /* told when a moved cell inverts (J <= 0) */
   PetscInt                   inverted = 0;      /* quadrature points with J <= 0 in the last residual */
+  PetscBool                  shapeDerivatives = PETSC_FALSE; /* D_{d_f} R in the Jacobian */
 };
 
 /* BlockOps of solver/system.h (the context is the FluidForms). */

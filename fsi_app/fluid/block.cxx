@@ -70,7 +70,7 @@ PetscErrorCode FluidBlock::SetUp(DM dm)
   PetscCall(FieldCellsCreate(dm, region, velocity, fb.velocity));
   PetscCall(FieldCellsCreate(dm, region, pressure, fb.pressure));
   fb.mesh = geometry ? &geometry->forms.cells : nullptr;
-  fb.rho = sc.rhoFluid, fb.mu = sc.muFluid;
+  fb.rho = sc.rhoFluid, fb.mu = sc.muFluid, fb.shapeDerivatives = sc.shapeDerivatives;
   PetscCall(CreateP2Rule(5, fb.rule));
   PetscCall(CreateFaceRule(4, fb.faceRule));
   auto addTraction = [&](const char *group, Traction t) -> PetscErrorCode {
@@ -142,7 +142,7 @@ std::string FluidBlock::InvertedCause() const
 
 PetscErrorCode FluidBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
 {
-  Errors     e;
+  Errors     e, ep;
   Poiseuille p = {sc.poiseuille[0], sc.poiseuille[1], sc.poiseuille[2], sc.muFluid};
   PetscReal  in = 0, out = 0; /* fluxes through inlet and outlet */
 
@@ -152,6 +152,10 @@ PetscErrorCode FluidBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
   PetscCall(FluidFlux(dm, forms, outletFaces, x, &out));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "flux inlet %.6e outlet %.6e\n", (double)in, (double)out));
   report.results.insert(report.results.end(), {{"inlet_flux", in}, {"outlet_flux", out}});
+  PetscCall(ComputeErrors(dm, forms.velocity, x, t, ZeroSolution, nullptr, e, forms.mesh)); /* the L2 norms: the error against zero */
+  PetscCall(ComputeErrors(dm, forms.pressure, x, t, ZeroSolution, nullptr, ep, forms.mesh));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "L2 norms on the moved fluid: velocity %.6e pressure %.6e\n", (double)e.l2, (double)ep.l2));
+  report.results.insert(report.results.end(), {{"velocity_l2_norm", e.l2}, {"pressure_l2_norm", ep.l2}});
   if (sc.mms) {
     PetscCall(ComputeErrors(dm, forms.pressure, x, t, FlowMMSPressure, &flow, e, forms.mesh));
     PetscCall(ReportErrors("pressure", e, report));

@@ -4,6 +4,12 @@
 
 namespace fsi {
 
+void ZeroSolution(const PetscReal[3], PetscReal, const void *, PetscReal u[3], PetscReal G[9])
+{
+  for (int i = 0; i < 3; i++) u[i] = 0;
+  for (int i = 0; i < 9; i++) G[i] = 0;
+}
+
 PetscErrorCode ComputeErrors(DM dm, const FieldCells &cells, Vec X, PetscReal t, ExactSolution exact, const void *ctx, Errors &e, const FieldCells *mesh)
 {
   P2Rule         rule;

@@ -11,6 +11,9 @@ namespace fsi {
 /* value u and gradient G[i*3+j] = du_i/dx_j at x and time t (a scalar field: u[0], G[0..2]) */
 using ExactSolution = void (*)(const PetscReal x[3], PetscReal t, const void *ctx, PetscReal u[3], PetscReal G[9]);
 
+/* u = 0: ComputeErrors() then gives the norms of the discrete field. */
+void ZeroSolution(const PetscReal x[3], PetscReal t, const void *ctx, PetscReal u[3], PetscReal G[9]);
+
 struct Errors {
   PetscReal l2, h1, l2Exact, h1Exact; /* ||u_h - u||, |u_h - u|_1, ||u||, |u|_1 */
 };
