@@ -1,5 +1,5 @@
 static const char help[] = "Reads a gmsh mesh as fsi_app does and prints, per physical group, its global number of\n"
-                           "cells, faces and vertices after distribution.\n"
+                           "cells and faces, and of vertices and edges in their closure, after distribution.\n"
                            "  -mesh <file>          the .msh file\n"
                            "  -require <a,b,...>    groups that must exist (the message names a missing one)\n";
 
@@ -23,16 +23,24 @@ int main(int argc, char **argv)
     s = k == std::string::npos ? "" : s.substr(k + 1);
   }
   PetscCall(fsi::LoadMesh(PETSC_COMM_WORLD, file, required, {}, &dm));
-  PetscCall(DMGetNumLabels(dm, &n));
+  PetscCall(DMGetNumLabels(dm, &n)); /* the groups: the closure labels made below come after them */
   for (PetscInt i = 0; i < n; i++) {
     const char *name;
-    PetscInt    c, f, v;
+    PetscInt    c, f, v, e;
+    DMLabel     label, closure;
     PetscCall(DMGetLabelName(dm, i, &name));
-    if (!strcmp(name, "depth") || !strcmp(name, "celltype")) continue;
+    if (!strcmp(name, "depth") || !strcmp(name, "celltype") || !strncmp(name, "closure_", 8)) continue;
     PetscCall(fsi::CountLabel(dm, name, 3, &c));
     PetscCall(fsi::CountLabel(dm, name, 2, &f));
-    PetscCall(fsi::CountLabel(dm, name, 0, &v));
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "group %s cells %" PetscInt_FMT " faces %" PetscInt_FMT " vertices %" PetscInt_FMT "\n", name, c, f, v));
+    const std::string cname = std::string("closure_") + name; /* the group's points and their closure */
+    PetscCall(DMGetLabel(dm, name, &label));
+    PetscCall(DMCreateLabel(dm, cname.c_str()));
+    PetscCall(DMGetLabel(dm, cname.c_str(), &closure));
+    PetscCall(fsi::ForEachLabelPoint(label, {}, [&](PetscInt p) { return DMLabelSetValue(closure, p, 1); }));
+    PetscCall(DMPlexLabelComplete(dm, closure));
+    PetscCall(fsi::CountLabel(dm, cname, 0, &v));
+    PetscCall(fsi::CountLabel(dm, cname, 1, &e));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "group %s cells %" PetscInt_FMT " faces %" PetscInt_FMT " vertices %" PetscInt_FMT " edges %" PetscInt_FMT "\n", name, c, f, v, e));
   }
   PetscInt cStart, cEnd, local, total;
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
