@@ -506,7 +506,7 @@ def fluid_ale_geometric_conservation():
     between(float(re.search(r"pressure L2 error (\S+)", out).group(1)), 0, 1e-12, "pressure L2 error (zero pressure)")
     between(float(re.search(r"max mesh displacement (\S+)", out).group(1)), 0.1, 0.2, "largest mesh displacement")
     listing = subprocess_out(["h5ls", "-r", os.path.join(tmp, "flow.h5")])
-    assert len(re.findall(r"/fields/mesh_displacement_\d+ +Dataset \{\d+, 3\}", listing)) == 5, listing
+    assert len(re.findall(r"/fields/displacement_\d+ +Dataset \{\d+, 3\}", listing)) == 5, listing
     shutil.rmtree(tmp)
 
 
@@ -784,7 +784,7 @@ def fsi_restart_output():
     for key in ("max_displacement", "displacement_norm", "velocity_l2_norm", "pressure_l2_norm"):
         between(abs(full["results"][key] - resumed["results"][key]) / full["results"][key], 0, 1e-10, f"restarted / uninterrupted {key}")
     listing = subprocess_out(["h5ls", "-r", f("o.h5")])
-    for dataset in ("/fluid/mesh/topology", "/wall/mesh/topology", "/fluid/fields/velocity_3", "/fluid/fields/pressure_3", "/fluid/fields/mesh_displacement_3", "/wall/fields/displacement_3"):
+    for dataset in ("/fluid/mesh/topology", "/wall/mesh/topology", "/fluid/fields/velocity_3", "/fluid/fields/pressure_3", "/fluid/fields/displacement_3", "/wall/fields/displacement_3"):
         assert dataset in listing, (dataset, listing)
     xdmf = open(f("o.xdmf")).read()
     assert xdmf.count('CollectionType="Spatial"') == 4 and xdmf.count("<Time ") == 4 * 3, xdmf[:2000]

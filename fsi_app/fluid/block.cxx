@@ -1,5 +1,7 @@
 #include "block.h"
+#include "discretization/conditions.h"
 #include "verification/errors.h"
+#include <string>
 #include "discretization/fields.h"
 #include "mesh/mesh.h"
 
@@ -88,6 +90,7 @@ PetscErrorCode FluidBlock::SetUp(DM dm)
     PetscCall(DMGetLabel(dm, g.first, &label));
     if (label) PetscCall(CellFacesCreate(dm, fb.velocity, label, *g.second));
   }
+  if (!sc.probes.empty()) PetscCall(PressureProbesCreate(PetscObjectComm((PetscObject)dm), fb.pressure, sc.probes, "-fluid_probes", probes));
   if (sc.mms) {
     const FlowMMS *m = &flow;
     PetscCall(addTraction(sc.outlet, [m](const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal tr[3]) { FlowMMSTraction(*m, x, n, t, tr); }));
@@ -127,7 +130,7 @@ PetscErrorCode FluidBlock::InitialState(DM dm, Vec x, PetscBool *set)
 void FluidBlock::Output(std::vector<OutputPart> &parts) const
 {
   OutputPart p{"fluid", &forms.velocity, {{"velocity", velocity}, {"pressure", pressure}}};
-  if (geometry) p.fields.push_back({"mesh_displacement", geometry->field}); /* ParaView: Warp By Vector shows the moved mesh */
+  if (geometry) p.fields.push_back({"displacement", geometry->field}); /* the mesh's: named as the wall's, so Warp By Vector moves both parts */
   parts.push_back(p);
 }
 
@@ -138,6 +141,47 @@ std::string FluidBlock::InvertedCause() const
   if (geometry && geometry->Coupled()) return "a cell of the moved fluid mesh inverted (J <= 0): the wall moved too far in one step for the harmonic extension of its displacement";
   PetscSNPrintf(cause, sizeof(cause), "a cell of the moved fluid mesh inverted (J <= 0): the prescribed interface displacement is too large for its harmonic extension; reduce -geometry_amplitude (%g now)", (double)sc.geometryAmplitude);
   return cause;
+}
+
+PetscErrorCode FluidBlock::AfterStep(DM dm, PetscInt, PetscReal t, Vec x)
+{
+  Vec                xl;
+  const PetscScalar *xa;
+
+  PetscFunctionBegin;
+  if (probes.cell.empty()) PetscFunctionReturn(0);
+  PetscCall(DMGetLocalVector(dm, &xl));
+  PetscCall(DMGlobalToLocal(dm, x, INSERT_VALUES, xl));
+  PetscCall(InsertEssentialValues(dm, t, xl));
+  PetscCall(VecGetArrayRead(xl, &xa));
+  PetscCall(PressureProbesRecord(PetscObjectComm((PetscObject)dm), forms.pressure, xa, t, probes));
+  PetscCall(VecRestoreArrayRead(xl, &xa));
+  PetscCall(DMRestoreLocalVector(dm, &xl));
+  PetscFunctionReturn(0);
+}
+
+/* When the pulse's front (half the inlet pressure) passes each probe, and the speed: the least
+   squares slope of the distance from the first probe against the arrival time. */
+static PetscErrorCode ReportArrivals(const PressureProbes &probes, PetscReal level, RunReport &report)
+{
+  const std::vector<PetscReal> arrival = PressureProbesArrival(probes, level);
+  PetscReal                    st = 0, ss = 0, stt = 0, sts = 0, m = 0;
+
+  PetscFunctionBegin;
+  for (size_t i = 0; i < arrival.size(); i++) {
+    const PetscReal *X = &probes.X[3 * i];
+    const PetscReal  s = PetscSqrtReal(PetscSqr(X[0] - probes.X[0]) + PetscSqr(X[1] - probes.X[1]) + PetscSqr(X[2] - probes.X[2]));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "probe (%g, %g, %g): the front (p = %g) arrives at t %.6e\n", (double)X[0], (double)X[1], (double)X[2], (double)level, (double)arrival[i]));
+    report.results.push_back({"arrival_" + std::to_string(i), arrival[i]});
+    if (arrival[i] < 0) continue;
+    st += arrival[i], ss += s, stt += arrival[i] * arrival[i], sts += arrival[i] * s, m++;
+  }
+  if (m >= 2 && m * stt - st * st > 0) {
+    const PetscReal c = (m * sts - st * ss) / (m * stt - st * st);
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wave speed %.6e cm/s (%g probes)\n", (double)c, (double)m));
+    report.results.push_back({"wave_speed", c});
+  }
+  PetscFunctionReturn(0);
 }
 
 PetscErrorCode FluidBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
@@ -168,6 +212,7 @@ PetscErrorCode FluidBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
     report.results.insert(report.results.end(), {{"flux", Q}, {"flux_relative_error", PetscAbsReal(Q / exact - 1)}});
     PetscCall(ReportErrors("", e, report));
   }
+  if (!probes.cell.empty() && sc.inletPressure != 0) PetscCall(ReportArrivals(probes, sc.inletPressure / 2, report));
   PetscFunctionReturn(0);
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "fluid/assembly.h"
+#include "fluid/probes.h"
 #include "geometry/block.h"
 #include "scene.h"
 #include "solver/block.h"
@@ -35,12 +36,14 @@ public:
   void           Output(std::vector<OutputPart> &parts) const override;
   const char    *Headline(PetscInt *f) const override { return *f = velocity, "velocity"; }
   std::string    InvertedCause() const override;
+  PetscErrorCode AfterStep(DM dm, PetscInt step, PetscReal t, Vec x) override;
   PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) override;
 
   PetscInt              velocity = -1, pressure = -1;
   FluidForms            forms;
   FlowMMS               flow;                                    /* the manufactured flow's data */
   std::vector<CellFace> inletFaces, outletFaces, interfaceFaces; /* the faces of the fluxes (empty: no such group) */
+  PressureProbes        probes;
 
 private:
   const Scene         &sc;
