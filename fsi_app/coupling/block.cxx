@@ -108,30 +108,12 @@ static void WallVelocity(const TimeHistory &h, const PetscScalar *x, const std::
   }
 }
 
-static PetscErrorCode GetPast(const TimeHistory &h, std::vector<const PetscScalar *> &past)
-{
-  PetscFunctionBegin;
-  for (Vec v : h.past) {
-    const PetscScalar *y;
-    PetscCall(VecGetArrayRead(v, &y));
-    past.push_back(y);
-  }
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode RestorePast(const TimeHistory &h, std::vector<const PetscScalar *> &past)
-{
-  PetscFunctionBegin;
-  for (size_t j = 0; j < past.size(); j++) PetscCall(VecRestoreArrayRead(h.past[j], &past[j]));
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode CouplingBlock::Residual(const PetscScalar *x, PetscScalar *f)
 {
   std::vector<const PetscScalar *> past;
 
   PetscFunctionBegin;
-  PetscCall(GetPast(*history, past));
+  PetscCall(TimeHistoryGetPast(history, past));
   for (const Node &n : nodes) {
     const PetscInt l = n.local[LAMBDA], u = n.local[U], ds = n.local[DS], df = n.local[DF];
     PetscReal      v[3];
@@ -143,7 +125,7 @@ PetscErrorCode CouplingBlock::Residual(const PetscScalar *x, PetscScalar *f)
       f[df + c] += x[df + c] - x[ds + c];
     }
   }
-  PetscCall(RestorePast(*history, past));
+  PetscCall(TimeHistoryRestorePast(history, past));
   PetscFunctionReturn(0);
 }
 
@@ -167,13 +149,13 @@ PetscErrorCode CouplingBlock::Jacobian(const PetscScalar *, Mat P)
 
 /* The largest |u - d_t d_s| and |d_f - d_s| over the interface nodes for the state just
    pushed into the history (its past[0]). */
-PetscErrorCode CouplingBlock::Continuity(DM dm, Vec, PetscReal *velocity, PetscReal *geometric)
+PetscErrorCode CouplingBlock::Continuity(DM dm, PetscReal *velocity, PetscReal *geometric)
 {
   std::vector<const PetscScalar *> past;
   PetscReal                        m[2] = {0, 0};
 
   PetscFunctionBegin;
-  PetscCall(GetPast(*history, past));
+  PetscCall(TimeHistoryGetPast(history, past));
   const PetscScalar                     *x = past[0];
   const std::vector<const PetscScalar *> before(past.begin() + 1, past.end());
   for (const Node &n : nodes) {
@@ -184,7 +166,7 @@ PetscErrorCode CouplingBlock::Continuity(DM dm, Vec, PetscReal *velocity, PetscR
       m[1] = PetscMax(m[1], PetscAbsReal(PetscRealPart(x[n.local[DF] + c] - x[n.local[DS] + c])));
     }
   }
-  PetscCall(RestorePast(*history, past));
+  PetscCall(TimeHistoryRestorePast(history, past));
   PetscCallMPI(MPIU_Allreduce(MPI_IN_PLACE, m, 2, MPIU_REAL, MPIU_MAX, PetscObjectComm((PetscObject)dm)));
   *velocity = m[0], *geometric = m[1];
   PetscFunctionReturn(0);
@@ -240,12 +222,12 @@ PetscErrorCode CouplingBlock::AfterStep(DM dm, PetscInt, PetscReal t, Vec x)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CouplingBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
+PetscErrorCode CouplingBlock::Results(DM dm, Vec, PetscReal, RunReport &report)
 {
   PetscReal velocity, geometric, mass = 0, rate = 0, inMax = 0, wallMax = 0;
 
   PetscFunctionBegin;
-  PetscCall(Continuity(dm, x, &velocity, &geometric));
+  PetscCall(Continuity(dm, &velocity, &geometric));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "interface continuity: max |u - d_t d_s| %.3e max |d_f - d_s| %.3e\n", (double)velocity, (double)geometric));
   report.results.insert(report.results.end(), {{"interface_velocity_jump", velocity}, {"interface_displacement_jump", geometric}});
   /* volume balance: (1) inflow - outflow - int_G u.n = 0 (div u orthogonal to the constants);

@@ -50,7 +50,7 @@ private:
   };
   enum { LAMBDA = 0, U = 1, DS = 2, DF = 3 };
 
-  PetscErrorCode Continuity(DM dm, Vec x, PetscReal *velocity, PetscReal *geometric);
+  PetscErrorCode Continuity(DM dm, PetscReal *velocity, PetscReal *geometric);
   PetscErrorCode FluidVolume(DM dm, const PetscScalar *x, PetscReal *volume);
 
   const Scene       &sc;

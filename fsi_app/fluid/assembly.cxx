@@ -10,25 +10,6 @@ struct CellState {
   PetscReal u[30], p[4], d[30], dudt[30], w[30];
 };
 
-static PetscErrorCode GetPast(const FluidForms &fb, std::vector<const PetscScalar *> &past)
-{
-  PetscFunctionBegin;
-  if (fb.history) /* statics has none */
-    for (Vec v : fb.history->past) {
-      const PetscScalar *y;
-      PetscCall(VecGetArrayRead(v, &y));
-      past.push_back(y);
-    }
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode RestorePast(const FluidForms &fb, std::vector<const PetscScalar *> &past)
-{
-  PetscFunctionBegin;
-  for (size_t j = 0; j < past.size(); j++) PetscCall(VecRestoreArrayRead(fb.history->past[j], &past[j]));
-  PetscFunctionReturn(0);
-}
-
 static void GatherState(const FluidForms &fb, PetscInt k, const PetscScalar *x, const std::vector<const PetscScalar *> &past, CellState &s)
 {
   Gather(fb.velocity, k, x, s.u);
@@ -150,7 +131,7 @@ PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
   PetscInt                         inverted = 0;
 
   PetscFunctionBegin;
-  PetscCall(GetPast(fb, past));
+  PetscCall(TimeHistoryGetPast(fb.history, past));
   for (PetscInt k = 0; k < fb.velocity.Size(); k++) {
     CellState s;
     PetscReal ru[30] = {0}, rp[4] = {0};
@@ -166,7 +147,7 @@ PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
       FaceResidual(fb, tg, face, fb.mesh ? de : nullptr, ru);
       Scatter(fb.velocity, face.k, ru, f);
     }
-  PetscCall(RestorePast(fb, past));
+  PetscCall(TimeHistoryRestorePast(fb.history, past));
   ((FluidForms *)ctx)->inverted = inverted;
   PetscCall(ReportInverted(fb, inverted));
   PetscFunctionReturn(0);
@@ -202,7 +183,7 @@ PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P)
   std::vector<const PetscScalar *> past;
 
   PetscFunctionBegin;
-  PetscCall(GetPast(fb, past));
+  PetscCall(TimeHistoryGetPast(fb.history, past));
   const PetscReal mass = past.empty() ? 0.0 : fb.rho * fb.history->first[0] / fb.history->dt; /* d(rho d_t u)/du */
   std::vector<std::vector<std::pair<const TractionGroup *, const CellFace *>>> cellFaces(fb.shapeDerivatives ? fb.velocity.Size() : 0);
   for (const TractionGroup &tg : fb.tractions) /* the traction faces of each cell: they move with its d_f */
@@ -250,7 +231,7 @@ PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P)
       PetscCall(MatSetValues(P, n, idx, 30, &fb.mesh->global[30 * k], S, ADD_VALUES));
     }
   }
-  PetscCall(RestorePast(fb, past));
+  PetscCall(TimeHistoryRestorePast(fb.history, past));
   PetscFunctionReturn(0);
 }
 

@@ -57,6 +57,27 @@ PetscErrorCode TimeHistorySetState(TimeHistory &h, Vec x)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode TimeHistoryGetPast(const TimeHistory *h, std::vector<const PetscScalar *> &past)
+{
+  PetscFunctionBegin;
+  past.clear();
+  if (h)
+    for (Vec v : h->past) {
+      const PetscScalar *y;
+      PetscCall(VecGetArrayRead(v, &y));
+      past.push_back(y);
+    }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TimeHistoryRestorePast(const TimeHistory *h, std::vector<const PetscScalar *> &past)
+{
+  PetscFunctionBegin;
+  for (size_t j = 0; j < past.size(); j++) PetscCall(VecRestoreArrayRead(h->past[j], &past[j]));
+  past.clear();
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode TimeHistoryDuplicate(const TimeHistory &h, TimeHistory &copy)
 {
   PetscFunctionBegin;

@@ -34,6 +34,10 @@ PetscErrorCode TimeHistoryPush(TimeHistory &h, Vec x, PetscReal t);
    since t = -infinity. */
 PetscErrorCode TimeHistorySetState(TimeHistory &h, Vec x);
 
+/* The arrays of the past states (none for h == nullptr: statics), and their release. */
+PetscErrorCode TimeHistoryGetPast(const TimeHistory *h, std::vector<const PetscScalar *> &past);
+PetscErrorCode TimeHistoryRestorePast(const TimeHistory *h, std::vector<const PetscScalar *> &past);
+
 /* A new history with the states and step of h; copy one into another of the same shape. */
 PetscErrorCode TimeHistoryDuplicate(const TimeHistory &h, TimeHistory &copy);
 PetscErrorCode TimeHistoryCopy(const TimeHistory &from, TimeHistory &to);

@@ -94,12 +94,7 @@ PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f
   PetscInt                   inverted = 0;
 
   PetscFunctionBegin;
-  if (inertia)
-    for (Vec v : sb.history->past) {
-      const PetscScalar *y;
-      PetscCall(VecGetArrayRead(v, &y));
-      past.push_back(y);
-    }
+  if (inertia) PetscCall(TimeHistoryGetPast(sb.history, past));
   for (PetscInt k = 0; k < sb.cells.Size(); k++) {
     const CellGeometry &g = sb.cells.geom[k];
     PetscReal           de[30], re[30] = {0};
@@ -156,7 +151,7 @@ PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f
       PressureResidual(sb, face, de, re);
       Scatter(sb.cells, face.k, re, f);
     }
-  for (size_t j = 0; j < past.size(); j++) PetscCall(VecRestoreArrayRead(sb.history->past[j], &past[j]));
+  PetscCall(TimeHistoryRestorePast(sb.history, past));
   ((StructureForms *)ctx)->inverted = inverted;
   if (inverted) {
     PetscCall(PetscInfo(sb.snes, "%" PetscInt_FMT " quadrature points with det F <= 0: the step is outside the domain of the law\n", inverted));
