@@ -663,6 +663,13 @@ def fsi_unknowns():
     assert u["fluid"] == 3 * nodes("fluid") and u["pressure"] == g["fluid"][2], (u, g["fluid"])
     assert u["geometry"] == u["fluid"] - nodes("inlet") - nodes("outlet"), u
     assert u["structure"] == 3 * (nodes("wall") - nodes("wall_inlet_ring") - nodes("wall_outlet_ring")), (u, g)
+    # a prescribed inflow velocity: on the inlet's rim u and d_s are both prescribed, so lambda is
+    # too; the rim is the inlet disc's boundary loop, 2 E_b nodes with E_b = 2E - 3F edges
+    inflow = fsi("-t_final", 5e-4, "-fluid_inflow_velocity", "0,0,1", "-fluid_inlet_pressure", 0)["unknowns"]
+    _, f_in, v_in, e_in = g["inlet"]
+    rim = 2 * (2 * e_in - 3 * f_in)
+    print("inlet rim nodes", rim, "unknowns with the inflow velocity", inflow)
+    assert inflow["multiplier"] == u["multiplier"] - 3 * rim and inflow["fluid"] == u["fluid"] - 3 * nodes("inlet"), inflow
     for field, counts in two["unknowns_per_rank"].items():
         if counts and sum(counts):
             between(max(counts) / (sum(counts) / 2), 1, 1.25, f"largest rank's share of {field} / the mean")

@@ -90,7 +90,7 @@ PetscErrorCode FluidBlock::SetUp(DM dm)
     PetscCall(DMGetLabel(dm, g.first, &label));
     if (label) PetscCall(CellFacesCreate(dm, fb.velocity, label, *g.second));
   }
-  if (!sc.probes.empty()) PetscCall(PressureProbesCreate(PetscObjectComm((PetscObject)dm), fb.pressure, sc.probes, "-fluid_probes", probes));
+  if (!sc.probes.empty()) PetscCall(ProbesCreate(PetscObjectComm((PetscObject)dm), fb.pressure, sc.probes, "-fluid_probes", probes));
   if (sc.mms) {
     const FlowMMS *m = &flow;
     PetscCall(addTraction(sc.outlet, [m](const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal tr[3]) { FlowMMSTraction(*m, x, n, t, tr); }));
@@ -145,26 +145,14 @@ std::string FluidBlock::InvertedCause() const
 
 PetscErrorCode FluidBlock::AfterStep(DM dm, PetscInt, PetscReal t, Vec x)
 {
-  Vec                xl;
-  const PetscScalar *xa;
-
-  PetscFunctionBegin;
-  if (probes.cell.empty()) PetscFunctionReturn(0);
-  PetscCall(DMGetLocalVector(dm, &xl));
-  PetscCall(DMGlobalToLocal(dm, x, INSERT_VALUES, xl));
-  PetscCall(InsertEssentialValues(dm, t, xl));
-  PetscCall(VecGetArrayRead(xl, &xa));
-  PetscCall(PressureProbesRecord(PetscObjectComm((PetscObject)dm), forms.pressure, xa, t, probes));
-  PetscCall(VecRestoreArrayRead(xl, &xa));
-  PetscCall(DMRestoreLocalVector(dm, &xl));
-  PetscFunctionReturn(0);
+  return probes.cell.empty() ? 0 : ProbesRecordGlobal(dm, forms.pressure, x, t, probes);
 }
 
 /* When the pulse's front (half the inlet pressure) passes each probe, and the speed: the least
    squares slope of the distance from the first probe against the arrival time. */
-static PetscErrorCode ReportArrivals(const PressureProbes &probes, PetscReal level, RunReport &report)
+static PetscErrorCode ReportArrivals(const Probes &probes, PetscReal level, RunReport &report)
 {
-  const std::vector<PetscReal> arrival = PressureProbesArrival(probes, level);
+  const std::vector<PetscReal> arrival = ProbesArrival(probes, level);
   PetscReal                    st = 0, ss = 0, stt = 0, sts = 0, m = 0;
 
   PetscFunctionBegin;
@@ -212,6 +200,7 @@ PetscErrorCode FluidBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
     report.results.insert(report.results.end(), {{"flux", Q}, {"flux_relative_error", PetscAbsReal(Q / exact - 1)}});
     PetscCall(ReportErrors("", e, report));
   }
+  if (!probes.cell.empty()) report.series.push_back({"pressure", &probes});
   if (!probes.cell.empty() && sc.inletPressure != 0) PetscCall(ReportArrivals(probes, sc.inletPressure / 2, report));
   PetscFunctionReturn(0);
 }

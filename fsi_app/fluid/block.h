@@ -6,7 +6,7 @@
 #pragma once
 
 #include "fluid/assembly.h"
-#include "fluid/probes.h"
+#include "discretization/probes.h"
 #include "geometry/block.h"
 #include "scene.h"
 #include "solver/block.h"
@@ -43,7 +43,7 @@ public:
   FluidForms            forms;
   FlowMMS               flow;                                    /* the manufactured flow's data */
   std::vector<CellFace> inletFaces, outletFaces, interfaceFaces; /* the faces of the fluxes (empty: no such group) */
-  PressureProbes        probes;
+  Probes                probes;
 
 private:
   const Scene         &sc;

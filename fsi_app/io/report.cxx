@@ -65,8 +65,23 @@ PetscErrorCode WriteReport(const char *file, MPI_Comm comm, const RunReport &r)
   }
   PetscCall(PetscFPrintf(comm, fp, "\n  ],\n  \"results\": {"));
   for (size_t k = 0; k < r.results.size(); k++) PetscCall(PetscFPrintf(comm, fp, "%s\"%s\": %.10e", k ? ", " : "", r.results[k].first.c_str(), (double)r.results[k].second));
+  PetscCall(PetscFPrintf(comm, fp, "},\n  \"probes\": ["));
+  for (size_t k = 0; k < r.series.size(); k++) {
+    const Probes &s = *r.series[k].second;
+    auto list = [&](const char *key, const std::vector<PetscReal> &v, const char *after) -> PetscErrorCode {
+      PetscFunctionBegin;
+      PetscCall(PetscFPrintf(comm, fp, "\"%s\": [", key));
+      for (size_t j = 0; j < v.size(); j++) PetscCall(PetscFPrintf(comm, fp, "%s%.10e", j ? ", " : "", (double)v[j]));
+      PetscCall(PetscFPrintf(comm, fp, "]%s", after));
+      PetscFunctionReturn(0);
+    };
+    PetscCall(PetscFPrintf(comm, fp, "%s\n    {\"field\": \"%s\", \"components\": %" PetscInt_FMT ", ", k ? "," : "", r.series[k].first.c_str(), s.nc));
+    PetscCall(list("points", s.X, ", "));
+    PetscCall(list("t", s.t, ", "));
+    PetscCall(list("values", s.values, "}"));
+  }
   const Phases &p = r.phases;
-  PetscCall(PetscFPrintf(comm, fp, "},\n  \"seconds\": {\"assembly\": %.4f, \"preconditioner_setup\": %.4f, \"krylov\": %.4f, \"total\": %.4f},\n  \"peak_memory_mib\": %.1f\n}\n", p.assembly, p.setup, p.krylov, p.total, p.peakMiB));
+  PetscCall(PetscFPrintf(comm, fp, "\n  ],\n  \"seconds\": {\"assembly\": %.4f, \"preconditioner_setup\": %.4f, \"krylov\": %.4f, \"total\": %.4f},\n  \"peak_memory_mib\": %.1f\n}\n", p.assembly, p.setup, p.krylov, p.total, p.peakMiB));
   PetscCall(PetscFClose(comm, fp));
   PetscFunctionReturn(0);
 }

@@ -3,6 +3,7 @@
    errors, phases, memory). */
 #pragma once
 
+#include "discretization/probes.h"
 #include "solver/time_loop.h"
 #include <string>
 #include <utility>
@@ -26,6 +27,7 @@ struct RunReport {
   std::vector<std::pair<std::string, PetscInt>>              unknowns;
   std::vector<std::pair<std::string, std::vector<PetscInt>>> unknownsPerRank;
   std::vector<std::pair<std::string, PetscReal>> results;
+  std::vector<std::pair<std::string, const Probes *>> series; /* probes' values over time, by field */
   std::vector<StepRecord>                        steps;
   PetscInt                                       restartedAt = -1; /* the checkpoint's step, -1: a fresh run */
   Phases                                         phases;

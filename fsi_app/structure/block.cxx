@@ -74,6 +74,7 @@ PetscErrorCode StructureBlock::SetUp(DM dm)
     PetscCall(CellFacesCreate(dm, sb.cells, group, sb.tractionFaces));
   }
   for (int d = 0; d < 3; d++) sb.bodyForce[d] = sc.bodyForce[d], sb.traction[d] = sc.traction[d];
+  if (!sc.structureProbes.empty()) PetscCall(ProbesCreate(PetscObjectComm((PetscObject)dm), sb.cells, sc.structureProbes, "-structure_probes", probes));
   PetscFunctionReturn(0);
 }
 
@@ -101,12 +102,18 @@ std::string StructureBlock::InvertedCause() const
   return forms.inverted ? "an element inverted (det F <= 0)" : "";
 }
 
+PetscErrorCode StructureBlock::AfterStep(DM dm, PetscInt, PetscReal t, Vec x)
+{
+  return probes.cell.empty() ? 0 : ProbesRecordGlobal(dm, forms.cells, x, t, probes);
+}
+
 PetscErrorCode StructureBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
 {
   Errors e;
   Lame   lame = LameCylinder(sc.E, sc.nu, sc.pressure, sc.lameRadii[0], sc.lameRadii[1]);
 
   PetscFunctionBegin;
+  if (!probes.cell.empty()) report.series.push_back({"displacement", &probes});
   if (sc.lameRadii[1] > 0) PetscCall(ComputeErrors(dm, forms.cells, x, t, LameSolution, &lame, e));
   else if (sc.mms) PetscCall(ComputeErrors(dm, forms.cells, x, t, MMSElasticitySolution, &sc.mmsAmplitude, e));
   else PetscFunctionReturn(0);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "scene.h"
+#include "discretization/probes.h"
 #include "solver/block.h"
 #include "structure/assembly.h"
 
@@ -33,10 +34,12 @@ public:
   void           Output(std::vector<OutputPart> &parts) const override { parts.push_back({"wall", &forms.cells, {{"displacement", field}}}); }
   const char    *Headline(PetscInt *f) const override { return *f = field, "displacement"; }
   std::string    InvertedCause() const override;
+  PetscErrorCode AfterStep(DM dm, PetscInt step, PetscReal t, Vec x) override;
   PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) override;
 
   PetscInt       field = -1; /* d_s */
   StructureForms forms;
+  Probes         probes;
 
 private:
   const Scene &sc;
