@@ -13,7 +13,6 @@ static const char help[] = "fsi_app: monolithic fluid-structure interaction on P
 #include "solver/time_loop.h"
 #include <petscgdsw.h>
 
-
 using namespace fsi;
 
 /* The mesh with the groups the blocks need, its cells balanced over the ranks region by
@@ -64,7 +63,7 @@ static PetscErrorCode CreateSolver(const Scene &sc, DM dm, const Blocks &b, SNES
     PetscCall(SNESSetLagPreconditioner(*snes, -2));
     PetscCall(SNESSetLagPreconditionerPersists(*snes, PETSC_TRUE));
   }
-  if (energy && b.structure) {
+  if (energy) {
     SNESLineSearch ls;
     PetscCall(SNESGetLineSearch(*snes, &ls));
     PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHCP));

@@ -60,10 +60,10 @@ PetscErrorCode ReadScene(Scene &sc)
   n = 3;
   PetscCall(PetscOptionsRealArray("-fluid_inflow_velocity", "prescribed velocity ux,uy,uz on the faces of -fluid_inlet (cm/s; no-slip groups keep u = 0 on their nodes)", nullptr, sc.inflowVelocity, &n, &sc.inflow));
   PetscCheck(!sc.inflow || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_inflow_velocity: give ux,uy,uz (got %" PetscInt_FMT " values)", n);
-  for (auto probe : {std::make_pair("-structure_probes", &sc.structureProbes), std::make_pair("-fluid_probes", &sc.probes)}) {
+  for (auto probe : {std::make_pair("-structure_probes", &sc.structureProbes), std::make_pair("-fluid_probes", &sc.fluidProbes)}) {
     PetscReal xyz[60];
     n = 60;
-    PetscCall(PetscOptionsRealArray(probe.first, probe.second == &sc.probes ? "points x1,y1,z1,x2,... (at most 20, reference configuration) where the pressure is recorded every step (in the run report); with -fluid_inlet_pressure, when the pulse's front (half its pressure) passes each and the wave speed" : "points x1,y1,z1,x2,... (at most 20, reference configuration) where the wall's displacement is recorded every step (in the run report)", nullptr, xyz, &n, &set));
+    PetscCall(PetscOptionsRealArray(probe.first, probe.second == &sc.fluidProbes ? "points x1,y1,z1,x2,... (at most 20, reference configuration) where the pressure is recorded every step (in the run report); with -fluid_inlet_pressure, when the pulse's front (half its pressure) passes each and the wave speed" : "points x1,y1,z1,x2,... (at most 20, reference configuration) where the wall's displacement is recorded every step (in the run report)", nullptr, xyz, &n, &set));
     PetscCheck(!set || (n > 0 && n % 3 == 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s: give x,y,z for each point (got %" PetscInt_FMT " values)", probe.first, n);
     if (set) probe.second->assign(xyz, xyz + n);
   }

@@ -47,7 +47,7 @@ struct Scene {
   PetscBool inflow = PETSC_FALSE;
   char      inlet[64] = "inlet", outlet[64] = "outlet";
   PetscReal poiseuille[3] = {0, 0, 0};      /* verification: R, L, pressure drop */
-  std::vector<PetscReal> probes;            /* points (3 each) where the pressure is recorded */
+  std::vector<PetscReal> fluidProbes;       /* points (3 each) where the pressure is recorded */
   /* geometry (harmonic extension) */
   char      interface[64]      = "interface";
   char      slip[256]          = "inlet:z,outlet:z"; /* d . n = 0: the normal component of planar ends */

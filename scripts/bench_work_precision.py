@@ -74,6 +74,17 @@ PCS, SCENES = FAMILIES[FAMILY]["pcs"], FAMILIES[FAMILY]["scenes"]
 out = os.path.join(top, "bench", "results", FAMILIES[FAMILY]["out"])
 
 
+def run_report(cmd, report, timeout):
+    """The run report of cmd (which writes it to `report`), None if the run wrote none."""
+    if os.path.exists(report):
+        os.remove(report)
+    log = run(cmd, timeout=timeout)
+    if not os.path.exists(report):
+        print(log[-1500:])
+        return None
+    return json.load(open(report))
+
+
 FSI_DT = (5e-4, 2.5e-4, 1.25e-4)
 FSI_TIMES = (3e-3, 6e-3)
 FSI_PROBES = "-fluid_probes 0,0,1.25 -structure_probes 0.18,0,1.25"  # the axis; mid-wall (x: radial)
@@ -101,13 +112,9 @@ def main_fsi():
         for dt in FSI_DT if level == 0 or "--full" in sys.argv else FSI_DT[:2]:  # L1 at the smallest dt: 48 steps of 35 s
             cmd = (f"mpiexec -n 2 {app} -options_file {top}/scenes/fsi_tube1_linear.opts -mesh {top}/meshes/tube1_L{level}.msh "
                    f"-dt {dt:g} -t_final {FSI_TIMES[-1]:g} {FSI_PROBES} -report {report}")
-            if os.path.exists(report):
-                os.remove(report)
-            log = run(cmd, timeout=7200)
-            if not os.path.exists(report):
-                print(log[-1500:])
+            r = run_report(cmd, report, 7200)
+            if not r:
                 continue
-            r = json.load(open(report))
             row = {"level": level, "dt": dt, "dofs": sum(r["unknowns"].values()), "seconds": r["seconds"]["total"],
                    "newton_per_step": sum(s["newton"] for s in r["steps"]) / len(r["steps"]), "peak_memory_mib": r["peak_memory_mib"], **fsi_values(r)}
             print(row, flush=True)
@@ -170,13 +177,9 @@ def main():
         for level, sopts in enumerate(levels):
             for pc, popts in PCS.items():
                 cmd = f"mpiexec -n 2 {app} {sopts} {popts} {FAMILIES[FAMILY]['solver']} -report {report}"
-                if os.path.exists(report):
-                    os.remove(report)
-                log = run(cmd, timeout=1800)
-                if not os.path.exists(report):
-                    print(log[-1500:])
+                r = run_report(cmd, report, 1800)
+                if not r:
                     continue
-                r = json.load(open(report))
                 row = {"scene": scene, "level": level, "preconditioner": pc, "dofs": sum(r["unknowns"][u] for u in FAMILIES[FAMILY]["unknowns"]),
                        "l2_relative": r["results"]["l2_relative"], "h1_relative": r["results"]["h1_relative"],
                        "pressure_l2_relative": r["results"].get("pressure_l2_relative", ""),

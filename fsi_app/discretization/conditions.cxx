@@ -73,17 +73,23 @@ static PetscErrorCode DestroyConstrainedNodes(void *ctx)
   return 0;
 }
 
+/* Add the components condition c fixes, on its points, to mask (nc components). */
+static void AddComponents(const Condition &c, PetscInt nc, const std::vector<PetscInt> &points, std::map<PetscInt, unsigned> &mask)
+{
+  unsigned m = c.comps.empty() ? (1u << nc) - 1 : 0;
+  for (PetscInt k : c.comps) m |= 1u << k;
+  for (PetscInt p : points) mask[p] |= m;
+}
+
 PetscErrorCode ConstrainedComponents(DM dm, const Conditions &list, PetscInt field, PetscInt nc, std::map<PetscInt, unsigned> &mask)
 {
   PetscFunctionBegin;
   mask.clear();
   for (const Condition &c : list) {
     std::vector<PetscInt> points;
-    unsigned              m = c.comps.empty() ? (1u << nc) - 1 : 0;
     if (c.field != field) continue;
-    for (PetscInt k : c.comps) m |= 1u << k;
     PetscCall(ConditionPoints(dm, c, points));
-    for (PetscInt p : points) mask[p] |= m;
+    AddComponents(c, nc, points, mask);
   }
   PetscFunctionReturn(0);
 }
@@ -112,12 +118,16 @@ PetscErrorCode CreateSection(DM dm, const Conditions &list)
     numDof[f * (dim + 1) + 0] = nc[f];                     /* vertices */
     numDof[f * (dim + 1) + 1] = degree == 2 ? nc[f] : 0;   /* edges */
   }
-  for (const Condition &c : list) PetscCheck(c.field >= 0 && c.field < nf, PetscObjectComm((PetscObject)dm), PETSC_ERR_PLIB, "%s: no field %" PetscInt_FMT, c.name.c_str(), c.field);
-  for (PetscInt f = 0; f < nf; f++) {
-    std::map<PetscInt, unsigned> mask;
-    PetscCall(ConstrainedComponents(dm, list, f, nc[f], mask));
-    for (const auto &pm : mask) groups[{f, pm.second}].push_back(pm.first);
+  std::vector<std::vector<PetscInt>>        points(list.size()); /* each condition's points, found once */
+  std::vector<std::map<PetscInt, unsigned>> mask(nf);
+  for (size_t k = 0; k < list.size(); k++) {
+    const Condition &c = list[k];
+    PetscCheck(c.field >= 0 && c.field < nf, PetscObjectComm((PetscObject)dm), PETSC_ERR_PLIB, "%s: no field %" PetscInt_FMT, c.name.c_str(), c.field);
+    PetscCall(ConditionPoints(dm, c, points[k]));
+    AddComponents(c, nc[c.field], points[k], mask[c.field]);
   }
+  for (PetscInt f = 0; f < nf; f++)
+    for (const auto &pm : mask[f]) groups[{f, pm.second}].push_back(pm.first);
   std::vector<PetscInt> bcField;
   std::vector<IS>       bcComps, bcPoints;
   for (const auto &g : groups) { /* one constraint per field and set of components, none twice */
@@ -147,12 +157,11 @@ PetscErrorCode CreateSection(DM dm, const Conditions &list)
   auto *cn = new ConstrainedNodes;
   cn->list = list;
   PetscCall(DMGetLocalSection(dm, &section));
-  for (const Condition &c : cn->list) {
+  for (size_t k = 0; k < cn->list.size(); k++) {
+    const Condition        &c = cn->list[k];
     ConstrainedNodes::Nodes n;
-    std::vector<PetscInt>   points;
     n.c = &c;
-    PetscCall(ConditionPoints(dm, c, points));
-    for (PetscInt p : points) {
+    for (PetscInt p : points[k]) {
       PetscInt  dof, off;
       PetscReal x[3];
       PetscCall(PetscSectionGetFieldDof(section, p, c.field, &dof));

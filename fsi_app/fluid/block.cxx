@@ -90,7 +90,7 @@ PetscErrorCode FluidBlock::SetUp(DM dm)
     PetscCall(DMGetLabel(dm, g.first, &label));
     if (label) PetscCall(CellFacesCreate(dm, fb.velocity, label, *g.second));
   }
-  if (!sc.probes.empty()) PetscCall(ProbesCreate(PetscObjectComm((PetscObject)dm), fb.pressure, sc.probes, "-fluid_probes", probes));
+  if (!sc.fluidProbes.empty()) PetscCall(ProbesCreate(PetscObjectComm((PetscObject)dm), fb.pressure, sc.fluidProbes, "-fluid_probes", probes));
   if (sc.mms) {
     const FlowMMS *m = &flow;
     PetscCall(addTraction(sc.outlet, [m](const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal tr[3]) { FlowMMSTraction(*m, x, n, t, tr); }));
