@@ -1,6 +1,6 @@
-"""Render a coupled fsi_app XDMF series (fluid and wall parts) at one time, like the seed's
-Fig. 5: the tube cut along its axis, warped by the displacement times a factor, the fluid
-coloured by pressure and the wall grey; prints what ParaView read so a test can check it.
+"""Render a coupled fsi_app XDMF series (fluid and wall parts) at one time, like Fig. 5 of
+Heinlein, Klawonn, Rheinbach (2016): the tube cut along its axis, warped by the displacement
+times a factor, the fluid coloured by pressure and the wall grey; prints what ParaView read so a test can check it.
     pvbatch scripts/render_fsi.py <file.xdmf> <out.png> <time> [warp] [title]
 ParaView 5.11's XDMF reader leaves the parts of a spatial collection unnamed, so each part is
 read from a copy of the series that holds only it (written beside the file, then removed)."""

@@ -1,6 +1,6 @@
 /* The coupling block: the Lagrange multiplier lambda (P2, 3 components, on the interface
-   nodes) and the coupling rows of the monolithic system (the seed's eq. 9) for conforming
-   meshes, where C1|G = I, C3|G = -I, C4|G = I are nodal selections:
+   nodes) and the coupling rows of the monolithic system (eq. 9 of Heinlein, Klawonn,
+   Rheinbach 2016, the pressure-wave benchmark) for conforming meshes, where C1|G = I, C3|G = -I, C4|G = I are nodal selections:
      fluid momentum at an interface node      + lambda                  (C1^T lambda)
      structure at an interface node           - lambda                  (C3^T lambda)
      lambda row                               u - d_t d_s = 0           (C1 u + C2 d_s = C2 d_s^n)
