@@ -39,14 +39,15 @@ Splits Blocks::Splits() const
 {
   fsi::Splits splits;
   for (Block *blk : list) {
-    auto s = std::find_if(splits.begin(), splits.end(), [&](const auto &x) { return x.first == blk->SplitName(); });
-    if (s == splits.end()) s = splits.insert(splits.end(), {blk->SplitName(), {}});
-    for (PetscInt f : blk->SplitFields()) s->second.push_back(f);
+    auto s = std::find_if(splits.begin(), splits.end(), [&](const Split &x) { return x.name == blk->SplitName(); });
+    if (s == splits.end()) s = splits.insert(splits.end(), {blk->SplitName(), {}, nullptr});
+    for (PetscInt f : blk->SplitFields()) s->fields.push_back(f);
+    if (s->name == blk->Name()) s->owner = blk;
   }
-  for (auto &s : splits) std::sort(s.second.begin(), s.second.end());
+  for (auto &s : splits) std::sort(s.fields.begin(), s.fields.end());
   const std::vector<std::string> order = {"structure", "geometry", "fluid"}; /* the block lower triangle */
   auto rank = [&](const std::string &n) { return std::find(order.begin(), order.end(), n) - order.begin(); };
-  std::stable_sort(splits.begin(), splits.end(), [&](const auto &a, const auto &b) { return rank(a.first) < rank(b.first); });
+  std::stable_sort(splits.begin(), splits.end(), [&](const Split &a, const Split &b) { return rank(a.name) < rank(b.name); });
   return splits;
 }
 

@@ -10,6 +10,7 @@ static const char help[] = "fsi_app: monolithic fluid-structure interaction on P
 #include "mesh/mesh.h"
 #include "blocks.h"
 #include "discretization/fields.h"
+#include "facsi/fluid_pc.h"
 #include "solver/time_loop.h"
 #include <petscgdsw.h>
 
@@ -74,8 +75,12 @@ static PetscErrorCode CreateSolver(const Scene &sc, DM dm, const Blocks &b, SNES
   PetscCall(KSPSetTolerances(ksp, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 500));
   PetscCall(SNESSetFromOptions(*snes));
   PetscCall(KSPGetPC(ksp, &pc));
-  if (b.list.size() == 1) PetscCall(b.list[0]->ConfigurePC(dm, pc, J));
-  else PetscCall(SetNamedSplits(pc, dm, b.Splits()));
+  if (b.list.size() == 1) {
+    MatNullSpace nsp;
+    PetscCall(b.list[0]->ConfigurePC(dm, pc, &nsp));
+    if (nsp) PetscCall(MatSetNearNullSpace(J, nsp));
+    PetscCall(MatNullSpaceDestroy(&nsp));
+  } else PetscCall(SetNamedSplits(pc, dm, b.Splits()));
   PetscCall(MatDestroy(&J));
   PetscFunctionReturn(0);
 }
@@ -175,6 +180,7 @@ int main(int argc, char **argv)
 
   PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
   PetscCall(PCGDSWRegister());
+  PetscCall(PCRegisterFaCSIFluid());
   PetscCall(PhasesBegin());
   PetscCall(ReadScene(sc));
   PetscCall(CreateBlocks(sc, b));

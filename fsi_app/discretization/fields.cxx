@@ -54,6 +54,22 @@ std::vector<std::string> SplitList(const char *s)
   return out;
 }
 
+PetscErrorCode FieldByName(DM dm, const char *name, PetscInt *field)
+{
+  PetscInt nf;
+
+  PetscFunctionBegin;
+  PetscCall(DMGetNumFields(dm, &nf));
+  for (*field = 0; *field < nf; (*field)++) {
+    PetscObject obj;
+    const char *fname;
+    PetscCall(DMGetField(dm, *field, nullptr, &obj));
+    PetscCall(PetscObjectGetName(obj, &fname));
+    if (!strcmp(fname, name)) PetscFunctionReturn(0);
+  }
+  SETERRQ(PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_WRONG, "the DM has no field called %s", name);
+}
+
 PetscErrorCode FieldNorm(DM dm, Vec x, PetscInt field, NormType type, PetscReal *norm)
 {
   IS      *is;

@@ -17,6 +17,9 @@ PetscErrorCode AddLagrangeField(DM dm, const std::string &name, const std::strin
    points of its label's stratum 1), made on the first call. */
 PetscErrorCode GetRegionLabel(DM dm, const std::string &region, DMLabel *label);
 
+/* The number of the field called `name` in dm (a split's sub-DM numbers its fields anew). */
+PetscErrorCode FieldByName(DM dm, const char *name, PetscInt *field);
+
 /* A norm of field `field` of the global vector x. */
 PetscErrorCode FieldNorm(DM dm, Vec x, PetscInt field, NormType type, PetscReal *norm);
 

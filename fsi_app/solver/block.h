@@ -55,8 +55,10 @@ public:
      the gradient of an energy (the critical-point line search applies). */
   virtual PetscBool Linear() const { return PETSC_FALSE; }
   virtual PetscBool HasEnergy() const { return PETSC_FALSE; }
-  /* The preconditioner of the whole system when the block is the scene's only one. */
-  virtual PetscErrorCode ConfigurePC(DM dm, PC pc, Mat J) { return 0; }
+  /* The preconditioner of its rows: pc solves them (the whole system when the block is the
+     scene's only one, its split of PCFIELDSPLIT otherwise) and dm holds exactly that split's
+     fields; *nsp (or NULL) is the rows' near-null space, attached by the caller. */
+  virtual PetscErrorCode ConfigurePC(DM dm, PC pc, MatNullSpace *nsp) { return *nsp = nullptr, 0; }
 
   virtual void Output(std::vector<OutputPart> &parts) const {}
   /* The field a run's summary line reports the largest value of ("displacement", "velocity"). */

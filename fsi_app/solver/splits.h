@@ -2,20 +2,27 @@
    splits (structure, geometry, fluid — the order of the block lower triangle: the geometry
    follows the structure, the fluid follows both), so options files address them by name,
    -fieldsplit_structure_pc_type gdsw, and adding a field never retargets an options file. Each
-   split's KSP gets the sub-DM of its fields: a nested PCFIELDSPLIT splits by field name
-   (-fieldsplit_fluid_fieldsplit_velocity_...). Options that split by number
-   (-pc_fieldsplit_0_fields) keep PETSc's meaning. */
+   split's KSP gets the sub-DM of its fields (a nested PCFIELDSPLIT splits by field name,
+   -fieldsplit_fluid_fieldsplit_velocity_...) and the block that owns the split configures its
+   PC there as it would the whole system's: gdsw gets the wall's subdomains and coordinates in
+   the split's numbering, and the rigid-body modes reach the split's matrix as its near-null
+   space. Options that split by number (-pc_fieldsplit_0_fields) keep PETSc's meaning. */
 #pragma once
 
-#include <petscksp.h>
+#include "solver/block.h"
 #include <string>
 #include <vector>
 
 namespace fsi {
 
-using Splits = std::vector<std::pair<std::string, std::vector<PetscInt>>>;
+struct Split {
+  std::string           name;
+  std::vector<PetscInt> fields; /* of the whole DM */
+  Block                *owner;  /* the block of the split's name (it configures the split's PC), or NULL */
+};
+using Splits = std::vector<Split>;
 
-/* If pc is a PCFIELDSPLIT not split by number, give it `splits` (names and dm's fields). */
+/* If pc is a PCFIELDSPLIT not split by number, give it `splits`. */
 PetscErrorCode SetNamedSplits(PC pc, DM dm, const Splits &splits);
 
 } // namespace fsi

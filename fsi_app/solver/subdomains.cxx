@@ -42,17 +42,61 @@ static PetscErrorCode RegionCells(DM dm, const char *region, std::vector<PetscIn
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode SetGDSWSubdomains(PC pc, DM dm, Mat J, const char *region, PetscInt field, PetscInt perRank)
+/* One (x, y, z) per node in the order of dm's global dofs: what PCSetCoordinates() expects
+   of a 3-component field (clamped nodes drop out with their dofs). Nothing if some node is
+   constrained in only some components (a symmetry plane): gdsw then takes the matrix's
+   block size. */
+static PetscErrorCode SetNodeCoordinates(PC pc, DM dm)
 {
-  PetscBool    isGDSW;
-  MatNullSpace nsp;
+  PetscSection section;
+  Vec          local, global;
+  PetscInt     pStart, pEnd, n;
+  PetscBool    partial = PETSC_FALSE;
 
   PetscFunctionBegin;
-  PetscCall(RigidBodyModes(dm, field, &nsp));
-  PetscCall(MatSetNearNullSpace(J, nsp));
-  PetscCall(MatNullSpaceDestroy(&nsp));
+  PetscCall(DMGetLocalSection(dm, &section));
+  PetscCall(PetscSectionGetChart(section, &pStart, &pEnd));
+  for (PetscInt p = pStart; p < pEnd; p++) {
+    PetscInt cdof;
+    PetscCall(PetscSectionGetConstraintDof(section, p, &cdof));
+    if (cdof == 1 || cdof == 2) partial = PETSC_TRUE;
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &partial, 1, MPIU_BOOL, MPI_LOR, PetscObjectComm((PetscObject)dm)));
+  if (partial) PetscFunctionReturn(0);
+  PetscCall(DMGetLocalVector(dm, &local));
+  PetscCall(DMGetGlobalVector(dm, &global));
+  PetscScalar *x;
+  PetscCall(VecGetArray(local, &x));
+  for (PetscInt p = pStart; p < pEnd; p++) {
+    PetscInt dof, off;
+    PetscCall(PetscSectionGetDof(section, p, &dof));
+    if (dof != 3) continue;
+    PetscCall(PetscSectionGetOffset(section, p, &off));
+    PetscReal xp[3];
+    PetscCall(NodePosition(dm, p, xp));
+    for (int c = 0; c < 3; c++) x[off + c] = xp[c];
+  }
+  PetscCall(VecRestoreArray(local, &x));
+  PetscCall(DMLocalToGlobal(dm, local, INSERT_VALUES, global));
+  PetscCall(VecGetLocalSize(global, &n));
+  PetscCall(VecGetArray(global, &x));
+  std::vector<PetscReal> coords(n);
+  for (PetscInt i = 0; i < n; i++) coords[i] = PetscRealPart(x[i]);
+  PetscCall(VecRestoreArray(global, &x));
+  PetscCall(PCSetCoordinates(pc, 3, n / 3, coords.data()));
+  PetscCall(DMRestoreGlobalVector(dm, &global));
+  PetscCall(DMRestoreLocalVector(dm, &local));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ConfigureGDSW(PC pc, DM dm, const char *region, PetscInt perRank)
+{
+  PetscBool isGDSW;
+
+  PetscFunctionBegin;
   PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCGDSW, &isGDSW));
   if (!isGDSW) PetscFunctionReturn(0);
+  PetscCall(SetNodeCoordinates(pc, dm));
   std::vector<PetscInt> cells;
   std::vector<idx_t>    xadj, adj;
   PetscCall(RegionCells(dm, region, cells, xadj, adj));

@@ -7,9 +7,10 @@
 
 namespace fsi {
 
-/* Attach the rigid-body near-null space of `field` to J; if pc is PCGDSW, also hand it
-   `perRank` subdomains per rank: closure dofs of METIS parts of the local cells of group
-   `region` ("" for all). */
-PetscErrorCode SetGDSWSubdomains(PC pc, DM dm, Mat J, const char *region, PetscInt field, PetscInt perRank);
+/* If pc is PCGDSW, hand it `perRank` subdomains per rank (the closure dofs of METIS parts of
+   the local cells of group `region`, "" for all) and the nodes' coordinates, both in dm's
+   numbering: the whole system's or a split's sub-DM. dm holds one vector field of 3
+   components whose nodes are free or clamped as a whole. */
+PetscErrorCode ConfigureGDSW(PC pc, DM dm, const char *region, PetscInt perRank);
 
 } // namespace fsi

@@ -1,5 +1,6 @@
 #include "block.h"
 #include "discretization/fields.h"
+#include "discretization/nodes.h"
 #include "solver/subdomains.h"
 #include "verification/errors.h"
 #include "verification/mms.h"
@@ -92,9 +93,15 @@ PetscErrorCode StructureBlock::SetTime(PetscReal t)
   return 0;
 }
 
-PetscErrorCode StructureBlock::ConfigurePC(DM dm, PC pc, Mat J)
+PetscErrorCode StructureBlock::ConfigurePC(DM dm, PC pc, MatNullSpace *nsp)
 {
-  return SetGDSWSubdomains(pc, dm, J, sc.region, field, sc.subdomains);
+  PetscInt f;
+
+  PetscFunctionBegin;
+  PetscCall(FieldByName(dm, "displacement", &f));
+  PetscCall(RigidBodyModes(dm, f, nsp));
+  PetscCall(ConfigureGDSW(pc, dm, sc.region, sc.subdomains));
+  PetscFunctionReturn(0);
 }
 
 std::string StructureBlock::InvertedCause() const

@@ -29,7 +29,7 @@ public:
   std::vector<PetscInt> SplitFields() const override { return {field}; }
   PetscBool             Linear() const override { return (PetscBool)(sc.material == LINEAR_ELASTIC && !sc.follower); }
   PetscBool             HasEnergy() const override { return PETSC_TRUE; }
-  PetscErrorCode        ConfigurePC(DM dm, PC pc, Mat J) override;
+  PetscErrorCode        ConfigurePC(DM dm, PC pc, MatNullSpace *nsp) override;
 
   void           Output(std::vector<OutputPart> &parts) const override { parts.push_back({"wall", &forms.cells, {{"displacement", field}}}); }
   const char    *Headline(PetscInt *f) const override { return *f = field, "displacement"; }
