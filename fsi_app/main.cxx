@@ -80,7 +80,7 @@ static PetscErrorCode CreateSolver(const Scene &sc, DM dm, const Blocks &b, SNES
     PetscCall(b.list[0]->ConfigurePC(dm, pc, &nsp));
     if (nsp) PetscCall(MatSetNearNullSpace(J, nsp));
     PetscCall(MatNullSpaceDestroy(&nsp));
-  } else PetscCall(SetNamedSplits(pc, dm, b.Splits()));
+  } else PetscCall(SetNamedSplits(*snes, dm, b.Splits()));
   PetscCall(MatDestroy(&J));
   PetscFunctionReturn(0);
 }
@@ -261,7 +261,9 @@ int main(int argc, char **argv)
   for (Block *blk : b.list) PetscCall(blk->Results(dm, x, dynamic ? loop.steps * step : 1.0, report));
   PetscCall(PhasesMeasure(PETSC_COMM_WORLD, t1 - t0, report.phases));
   const Phases &p = report.phases;
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "seconds: assembly %.3f preconditioner setup %.3f krylov %.3f total %.3f; peak memory %.1f MiB\n", p.assembly, p.setup, p.krylov, p.total, p.peakMiB));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "seconds: assembly %.3f preconditioner setup %.3f", p.assembly, p.setup));
+  for (const auto &s : p.splitSetUp) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s%s %.3f", &s == &p.splitSetUp.front() ? " (" : ", ", s.first.c_str(), s.second));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s krylov %.3f total %.3f; peak memory %.1f MiB\n", p.splitSetUp.empty() ? "" : ")", p.krylov, p.total, p.peakMiB));
   if (sc.report[0]) PetscCall(WriteReport(sc.report, PETSC_COMM_WORLD, report));
 
   if (sc.output[0]) PetscCall(XdmfClose(series));

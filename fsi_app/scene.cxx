@@ -1,5 +1,6 @@
 #include "scene.h"
 #include "discretization/fields.h"
+#include "solver/block.h"
 #include <algorithm>
 
 namespace fsi {
@@ -52,6 +53,7 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(PetscOptionsReal("-structure_density", "density of the wall (g/cm^3)", nullptr, sc.rho, &sc.rho, nullptr));
   PetscCall(PetscOptionsInt("-structure_degree", "polynomial degree of the displacement", nullptr, sc.degree, &sc.degree, nullptr));
   PetscCall(PetscOptionsInt("-structure_subdomains", "GDSW subdomains per rank (METIS on the rank's cells)", nullptr, sc.subdomains, &sc.subdomains, nullptr));
+  PetscCall(PetscOptionsEList("-structure_pc_setup", "when the structure split's preconditioner is rebuilt (default: once for a linear wall, every time step otherwise)", nullptr, SplitSetUpNames, 3, sc.pcSetUp < 0 ? "auto" : SplitSetUpNames[sc.pcSetUp], &sc.pcSetUp, nullptr));
   PetscCall(PetscOptionsString("-fluid_region", "physical group of the fluid's cells", nullptr, sc.fluidRegion, sc.fluidRegion, sizeof(sc.fluidRegion), nullptr));
   PetscCall(PetscOptionsString("-fluid_noslip", "groups of faces where the velocity is zero, comma separated", nullptr, sc.noslip, sc.noslip, sizeof(sc.noslip), nullptr));
   PetscCall(PetscOptionsReal("-fluid_density", "density of the fluid (g/cm^3)", nullptr, sc.rhoFluid, &sc.rhoFluid, nullptr));

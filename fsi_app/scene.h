@@ -37,6 +37,7 @@ struct Scene {
   PetscReal fibreAngle  = 43.39;                          /* degrees from circumferential */
   PetscReal rho         = 1.2;
   PetscInt  degree = 2, subdomains = 1;
+  PetscInt  pcSetUp = -1; /* its split's preconditioner rebuilt every Newton step, time step, once (SplitSetUp); -1: once if linear, else every time step */
   std::vector<PetscReal> structureProbes;             /* points (3 each) where the displacement is recorded */
   /* fluid */
   char      fluidRegion[64] = "fluid";

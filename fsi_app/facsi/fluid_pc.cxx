@@ -160,6 +160,7 @@ static PetscErrorCode PCSetUp_FaCSIFluid(PC pc)
     PetscCall(MatCreateVecs(fs->A, &fs->z, &fs->b));
     PetscCall(VecDuplicate(fs->b, &fs->r));
   } else PetscCall(KSPSetOperators(fs->ksp, fs->Fhat, fs->Fhat));
+  PetscCall(KSPSetUp(fs->ksp)); /* now, not in the first application */
   PetscCall(PetscLogEventEnd(FaCSI_SetUp, pc, 0, 0, 0));
   PetscFunctionReturn(0);
 }

@@ -17,6 +17,11 @@
 
 namespace fsi {
 
+/* When the preconditioner of a split is set up again: every Newton step, at the first Newton
+   step of each time step, or once per run (rows that never change). */
+enum SplitSetUp { SETUP_EVERY_NEWTON, SETUP_EVERY_STEP, SETUP_ONCE };
+extern const char *const SplitSetUpNames[];
+
 /* Fields written on the P2 cells of one region: one part of the XDMF output. */
 struct OutputPart {
   std::string                                   name; /* "fluid", "wall" */
@@ -59,6 +64,8 @@ public:
      scene's only one, its split of PCFIELDSPLIT otherwise) and dm holds exactly that split's
      fields; *nsp (or NULL) is the rows' near-null space, attached by the caller. */
   virtual PetscErrorCode ConfigurePC(DM dm, PC pc, MatNullSpace *nsp) { return *nsp = nullptr, 0; }
+  /* How often its split's preconditioner is rebuilt (the split's rows change with the state). */
+  virtual SplitSetUp SetUpPolicy() const { return SETUP_EVERY_NEWTON; }
 
   virtual void Output(std::vector<OutputPart> &parts) const {}
   /* The field a run's summary line reports the largest value of ("displacement", "velocity"). */

@@ -3,8 +3,48 @@
 
 namespace fsi {
 
-PetscErrorCode SetNamedSplits(PC pc, DM dm, const Splits &splits)
+const char *const SplitSetUpNames[] = {"every_newton", "every_step", "once"};
+
+struct SplitSetUps {
+  SNES                       snes;
+  std::vector<KSP>           ksp; /* borrowed: PCFIELDSPLIT owns them */
+  std::vector<SplitSetUp>    policy;
+  std::vector<PetscLogEvent> event;
+};
+
+static PetscErrorCode DestroySplitSetUps(void *ctx)
 {
+  delete (SplitSetUps *)ctx;
+  return 0;
+}
+
+/* Before the Krylov iteration: the fieldsplit's matrices for this Jacobian, then each split's
+   preconditioner, rebuilt or kept as its block asks. */
+static PetscErrorCode SetUpSplits(KSP ksp, Vec, Vec, void *ctx)
+{
+  SplitSetUps *s = (SplitSetUps *)ctx;
+  PetscInt     it;
+
+  PetscFunctionBegin;
+  PetscCall(KSPSetUp(ksp));
+  PetscCall(SNESGetIterationNumber(s->snes, &it));
+  for (size_t k = 0; k < s->ksp.size(); k++) {
+    PC              pc;
+    const PetscBool keep = (PetscBool)(s->policy[k] == SETUP_ONCE || (s->policy[k] == SETUP_EVERY_STEP && it > 0));
+    PetscCall(KSPGetPC(s->ksp[k], &pc));
+    PetscCall(PCSetReusePreconditioner(pc, keep)); /* a PC never set up is set up regardless */
+    PetscCall(PetscLogEventBegin(s->event[k], s->ksp[k], 0, 0, 0));
+    PetscCall(KSPSetUp(s->ksp[k]));
+    PetscCall(KSPSetUpOnBlocks(s->ksp[k]));
+    PetscCall(PetscLogEventEnd(s->event[k], s->ksp[k], 0, 0, 0));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SetNamedSplits(SNES snes, DM dm, const Splits &splits)
+{
+  KSP             outer;
+  PC              pc;
   PetscBool       isFieldSplit, byNumber;
   const char     *prefix;
   PCCompositeType type;
@@ -12,6 +52,8 @@ PetscErrorCode SetNamedSplits(PC pc, DM dm, const Splits &splits)
   std::vector<IS> is(splits.size());
 
   PetscFunctionBegin;
+  PetscCall(SNESGetKSP(snes, &outer));
+  PetscCall(KSPGetPC(outer, &pc));
   PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &isFieldSplit));
   if (!isFieldSplit || splits.size() < 2) PetscFunctionReturn(0);
   PetscCall(PCGetOptionsPrefix(pc, &prefix));
@@ -23,12 +65,15 @@ PetscErrorCode SetNamedSplits(PC pc, DM dm, const Splits &splits)
   }
   PetscCall(PCFieldSplitGetType(pc, &type));
   if (type != PC_COMPOSITE_SCHUR) { /* the Schur type makes its KSPs at set-up */
-    KSP     *ksp;
-    PetscInt n;
+    KSP         *ksp;
+    PetscInt     n;
+    SplitSetUps *ctx = new SplitSetUps;
+    ctx->snes        = snes;
     PetscCall(PCFieldSplitGetSubKSP(pc, &n, &ksp));
     for (PetscInt s = 0; s < n; s++) {
-      PC           subpc;
-      MatNullSpace nsp = nullptr;
+      PC            subpc;
+      MatNullSpace  nsp = nullptr;
+      PetscLogEvent event;
       PetscCall(KSPSetDM(ksp[s], sub[s]));
       PetscCall(KSPSetDMActive(ksp[s], PETSC_FALSE));
       PetscCall(KSPSetFromOptions(ksp[s])); /* the split's PC type, before its owner configures it */
@@ -36,8 +81,19 @@ PetscErrorCode SetNamedSplits(PC pc, DM dm, const Splits &splits)
       if (splits[s].owner) PetscCall(splits[s].owner->ConfigurePC(sub[s], subpc, &nsp));
       if (nsp) PetscCall(PetscObjectCompose((PetscObject)is[s], "nearnullspace", (PetscObject)nsp)); /* PCFIELDSPLIT sets it on the split's matrix */
       PetscCall(MatNullSpaceDestroy(&nsp));
+      PetscCall(PetscLogEventRegister(("SplitSetUp_" + splits[s].name).c_str(), KSP_CLASSID, &event));
+      ctx->ksp.push_back(ksp[s]);
+      ctx->policy.push_back(splits[s].owner ? splits[s].owner->SetUpPolicy() : SETUP_EVERY_NEWTON);
+      ctx->event.push_back(event);
     }
     PetscCall(PetscFree(ksp));
+    PetscContainer container;
+    PetscCall(PetscContainerCreate(PETSC_COMM_SELF, &container));
+    PetscCall(PetscContainerSetPointer(container, ctx));
+    PetscCall(PetscContainerSetUserDestroy(container, DestroySplitSetUps));
+    PetscCall(PetscObjectCompose((PetscObject)outer, "fsi_split_setups", (PetscObject)container));
+    PetscCall(PetscContainerDestroy(&container));
+    PetscCall(KSPSetPreSolve(outer, SetUpSplits, ctx));
   }
   for (size_t s = 0; s < splits.size(); s++) {
     PetscCall(ISDestroy(&is[s]));

@@ -6,10 +6,13 @@
    -fieldsplit_fluid_fieldsplit_velocity_...) and the block that owns the split configures its
    PC there as it would the whole system's: gdsw gets the wall's subdomains and coordinates in
    the split's numbering, and the rigid-body modes reach the split's matrix as its near-null
-   space. Options that split by number (-pc_fieldsplit_0_fields) keep PETSc's meaning. */
+   space. Each split's preconditioner is set up before the Krylov iteration, under the log
+   event SplitSetUp_<name>, as often as its block asks (Block::SetUpPolicy: a linear wall's
+   once per run). Options that split by number (-pc_fieldsplit_0_fields) keep PETSc's meaning. */
 #pragma once
 
 #include "solver/block.h"
+#include <petscsnes.h>
 #include <string>
 #include <vector>
 
@@ -22,7 +25,7 @@ struct Split {
 };
 using Splits = std::vector<Split>;
 
-/* If pc is a PCFIELDSPLIT not split by number, give it `splits`. */
-PetscErrorCode SetNamedSplits(PC pc, DM dm, const Splits &splits);
+/* If the PC of snes's KSP is a PCFIELDSPLIT not split by number, give it `splits`. */
+PetscErrorCode SetNamedSplits(SNES snes, DM dm, const Splits &splits);
 
 } // namespace fsi

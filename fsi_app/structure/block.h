@@ -30,6 +30,7 @@ public:
   PetscBool             Linear() const override { return (PetscBool)(sc.material == LINEAR_ELASTIC && !sc.follower); }
   PetscBool             HasEnergy() const override { return PETSC_TRUE; }
   PetscErrorCode        ConfigurePC(DM dm, PC pc, MatNullSpace *nsp) override;
+  SplitSetUp            SetUpPolicy() const override { return sc.pcSetUp >= 0 ? (SplitSetUp)sc.pcSetUp : Linear() ? SETUP_ONCE : SETUP_EVERY_STEP; }
 
   void           Output(std::vector<OutputPart> &parts) const override { parts.push_back({"wall", &forms.cells, {{"displacement", field}}}); }
   const char    *Headline(PetscInt *f) const override { return *f = field, "displacement"; }
