@@ -56,7 +56,7 @@ static PetscErrorCode CreateSolver(const Scene &sc, DM dm, const Blocks &b, SNES
   for (const Block *blk : b.list) linear = (PetscBool)(linear && blk->Linear()), energy = (PetscBool)(energy && blk->HasEnergy());
   PetscCall(SNESCreate(PETSC_COMM_WORLD, snes));
   PetscCall(SNESSetDM(*snes, dm));
-  PetscCall(DMCreateMatrix(dm, &J));
+  PetscCall(SystemCreateMatrix(dm, &J));
   PetscCall(SNESSetJacobian(*snes, J, J, nullptr, nullptr));
   if (linear && sc.Dynamic()) {
     PetscCall(SNESSetLagJacobian(*snes, -2));

@@ -21,15 +21,65 @@ static PetscErrorCode SystemResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode SystemCreateMatrix(DM dm, Mat *J)
+{
+  PetscSection global;
+  PetscInt     m, pStart, pEnd, bs = 3;
+
+  PetscFunctionBegin;
+  PetscCall(DMGetGlobalSection(dm, &global));
+  PetscCall(PetscSectionGetConstrainedStorageSize(global, &m));
+  /* nodes of one 3-component field, none partly constrained: block size 3 (AMG's rigid-body modes) */
+  PetscCall(PetscSectionGetChart(global, &pStart, &pEnd));
+  for (PetscInt p = pStart; p < pEnd && bs == 3; p++) {
+    PetscInt dof, cdof;
+    PetscCall(PetscSectionGetDof(global, p, &dof));
+    PetscCall(PetscSectionGetConstraintDof(global, p, &cdof));
+    if (dof > 0 && dof - cdof != 3 && dof - cdof != 0) bs = 1;
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bs, 1, MPIU_INT, MPI_MIN, PetscObjectComm((PetscObject)dm)));
+  PetscCall(MatCreate(PetscObjectComm((PetscObject)dm), J));
+  PetscCall(MatSetSizes(*J, m, m, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetBlockSize(*J, bs));
+  PetscCall(MatSetType(*J, MATAIJ));
+  PetscCall(MatSetDM(*J, dm));
+  PetscFunctionReturn(0);
+}
+
+/* The entries the blocks insert at state x, as P's preallocation. (The preallocator has block
+   size 1 whatever P's: with 3, PETSc 3.18's fills some 3 x 3 blocks of zeros on one side of the
+   diagonal only, and the wall's matrix is no longer structurally symmetric.) */
+static PetscErrorCode Preallocate(const System &s, const PetscScalar *x, Mat P)
+{
+  Mat      pre;
+  PetscInt m, n;
+
+  PetscFunctionBegin;
+  PetscCall(MatGetLocalSize(P, &m, &n));
+  PetscCall(MatCreate(PetscObjectComm((PetscObject)P), &pre));
+  PetscCall(MatSetSizes(pre, m, n, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetType(pre, MATPREALLOCATOR));
+  PetscCall(MatSetUp(pre));
+  for (Block *b : s.blocks) PetscCall(b->Jacobian(x, pre));
+  PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, P));
+  PetscCall(MatDestroy(&pre));
+  PetscCall(MatSetOption(P, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode SystemJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
 {
-  const System      &s = *(System *)ctx;
+  System            &s = *(System *)ctx;
   const PetscScalar *x;
 
   PetscFunctionBegin;
   PetscCall(InsertEssentialValues(dm, s.time, Xl));
-  PetscCall(MatZeroEntries(P));
   PetscCall(VecGetArrayRead(Xl, &x));
+  if (!s.laidOut) PetscCall(Preallocate(s, x, P));
+  s.laidOut = PETSC_TRUE;
+  PetscCall(MatZeroEntries(P));
   for (Block *b : s.blocks) PetscCall(b->Jacobian(x, P));
   PetscCall(VecRestoreArrayRead(Xl, &x));
   PetscCall(AssembleOperators(J, P));

@@ -12,7 +12,15 @@ namespace fsi {
 struct System {
   std::vector<Block *> blocks;
   PetscReal            time = 0; /* of the step being solved (statics: the load fraction) */
+  PetscBool            laidOut = PETSC_FALSE; /* the matrix's pattern is set (SystemCreateMatrix) */
 };
+
+/* The Jacobian's matrix, without storage yet: the first Jacobian evaluation lays it out with
+   exactly the entries the blocks insert (DMCreateMatrix's pattern couples every field at a
+   point with every other: the geometry's rows with the velocity, the multiplier's with all the
+   fluid's and the wall's, about 30 % zeros on the coupled tube). Later insertions outside
+   the pattern are errors. */
+PetscErrorCode SystemCreateMatrix(DM dm, Mat *J);
 
 /* The system's residual and Jacobian become dm's DMSNES local callbacks; `s` must outlive dm. */
 PetscErrorCode SystemAttach(DM dm, System &s);
