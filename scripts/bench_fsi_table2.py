@@ -12,16 +12,17 @@ The same subdomains for all four (-structure_subdomains per rank, 2 ranks), the 
 per run: Newton steps per time step, GMRES iterations per Newton step, seconds per time step
 split into assembly / structure set-up / other set-up / Krylov, and peak memory.
 Usage: scripts/bench_fsi_table2.py [--mesh M] [--subdomains N] [--t-final T] [--dts a,b,..]
-           [--materials linear,neohooke,arterial] [--pcs a,b,c,d] [--out NAME] [--plot]
-Results: bench/results/<NAME>.{csv,cmd,png} (default NAME fsi_table2)."""
+           [--materials linear,neohooke,arterial] [--pcs a,b,c,d] [--out NAME] [--plot] [--table]
+Results: bench/results/<NAME>.{csv,cmd,png} (default NAME fsi_table2); --plot redraws the PNG,
+--table prints the paper's layout as markdown (GMRES per Newton step, the paper's in brackets,
+and seconds per time step, by material and time step)."""
 import argparse
 import csv
-import json
 import os
 import sys
 import tempfile
 
-from benchlib import run, write_results
+from benchlib import loadavg, run_report, step_costs, write_results
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 app = os.path.join(os.environ.get("GDSW_BUILD", os.path.join(top, "build")), "fsi_app", "fsi_app")
@@ -49,26 +50,9 @@ def one(material, dt, pc, args):
     cmd = (f"mpiexec -n 2 --mca mpi_yield_when_idle 1 {app} -options_file scenes/fsi_tube1_{material}.opts -options_file scenes/fsi_facsi.opts "
            f"-mesh {args.mesh} -structure_subdomains {args.subdomains} -dt {dt} -t_final {args.t_final} "
            f"{opts.format(blocks=2 * args.subdomains)} -report {tmp}/r.json")
-    out = run(cmd, timeout=args.timeout)
+    r = run_report(cmd, f"{tmp}/r.json", args.timeout)
     row = {"material": MATERIALS[material], "dt": dt, "pc": name, "mesh": os.path.basename(args.mesh), "subdomains": 2 * args.subdomains}
-    try:
-        r = json.load(open(f"{tmp}/r.json"))
-    except (OSError, ValueError):
-        print(out[-3000:])
-        return dict(row, converged=0), cmd
-    steps = r["steps"]
-    s = r["seconds"]
-    n = len(steps)
-    newton = sum(x["newton"] for x in steps)
-    structure = s.get("setup_structure", 0.0)
-    row.update({
-        "converged": int(all(x["reason"].startswith("CONVERGED") for x in steps) and "reason CONVERGED" in out),
-        "unknowns": sum(r["unknowns"].values()), "structure_unknowns": r["unknowns"]["structure"],
-        "steps": n, "newton_per_step": newton / n, "gmres_per_newton": sum(x["krylov"] for x in steps) / newton,
-        "seconds_per_step": s["total"] / n, "assembly_per_step": s["assembly"] / n, "structure_setup_per_step": structure / n,
-        "other_setup_per_step": (s["preconditioner_setup"] - structure) / n, "krylov_per_step": s["krylov"] / n,
-        "peak_memory_mib": r["peak_memory_mib"],
-    })
+    row.update(step_costs(r) if r else {"converged": 0})
     seed = SEED.get((row["material"], dt))
     row["seed_gmres_per_newton"] = "" if seed is None else seed["abcd".index(pc)]
     print({k: (float(f"{v:.4g}") if isinstance(v, float) else v) for k, v in row.items()}, flush=True)
@@ -101,6 +85,28 @@ def plot(out):
     fig.savefig(out + ".png", dpi=110)
 
 
+def table(out):
+    rows = list(csv.DictReader(open(out + ".csv")))
+    names = [n for n, _ in PCS.values() if any(r["pc"] == n for r in rows)]
+    print("| wall | Δt (ms) | Newton per step | " + " | ".join(f"{n}: GMRES (paper) · s/step" for n in names) + " |")
+    print("|---|---|---|" + "---|" * len(names))
+    for m in MATERIALS.values():
+        for dt in sorted({float(r["dt"]) for r in rows}):
+            sel = {r["pc"]: r for r in rows if r["material"] == m and float(r["dt"]) == dt}
+            if not sel:
+                continue
+            newton = "/".join(sorted({f"{float(r['newton_per_step']):.2g}" for r in sel.values() if r["converged"] == "1"}))
+            cells = []
+            for n in names:
+                r = sel.get(n)
+                if not r or r["converged"] != "1":
+                    cells.append("did not converge" if r else "")
+                    continue
+                seed = f" ({float(r['seed_gmres_per_newton']):.0f})" if r["seed_gmres_per_newton"] else " (no conv.)"
+                cells.append(f"{float(r['gmres_per_newton']):.1f}{seed} · {float(r['seconds_per_step']):.2f}")
+            print(f"| {m} | {dt * 1e3:g} | {newton} | " + " | ".join(cells) + " |")
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("--mesh", default="meshes/tube1_L0.msh")
@@ -112,10 +118,13 @@ def main():
     p.add_argument("--timeout", type=float, default=3600)
     p.add_argument("--out", default="fsi_table2")
     p.add_argument("--plot", action="store_true")
+    p.add_argument("--table", action="store_true")
     args = p.parse_args()
     out = os.path.join(top, "bench", "results", args.out)
+    if args.table:
+        return table(out)
     if not args.plot:
-        rows, cmds = [], []
+        rows, cmds, load = [], [], loadavg()
         for material in args.materials.split(","):
             for dt in [float(d) for d in args.dts.split(",")]:
                 for pc in args.pcs.split(","):
@@ -123,7 +132,7 @@ def main():
                     rows.append(row)
                     cmds.append(cmd)
         keys = max(rows, key=len).keys()
-        write_results(out, [{k: r.get(k, "") for k in keys} for r in rows], cmds, " ".join(["scripts/bench_fsi_table2.py"] + sys.argv[1:]))
+        write_results(out, [{k: r.get(k, "") for k in keys} for r in rows], cmds, " ".join(["scripts/bench_fsi_table2.py"] + sys.argv[1:]), load)
     plot(out)
 
 

@@ -18,14 +18,13 @@ relative L2 norm of the displacement or velocity against the exact solution.
 Usage: scripts/bench_work_precision.py [structure|fluid|poiseuille|fsi] [--plot] [--levels N] [--full]
 (--plot redraws the PNG from the CSV)"""
 import csv
-import json
 import math
 import os
 import subprocess
 import sys
 import tempfile
 
-from benchlib import run, write_results
+from benchlib import run_report, write_results
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 app = os.path.join(os.environ.get("GDSW_BUILD", os.path.join(top, "build")), "fsi_app", "fsi_app")
@@ -72,17 +71,6 @@ FAMILIES["fsi"] = {"out": "work_precision_fsi", "pcs": {}, "scenes": {}}
 FAMILY = next((a for a in sys.argv[1:] if a in FAMILIES), "structure")
 PCS, SCENES = FAMILIES[FAMILY]["pcs"], FAMILIES[FAMILY]["scenes"]
 out = os.path.join(top, "bench", "results", FAMILIES[FAMILY]["out"])
-
-
-def run_report(cmd, report, timeout):
-    """The run report of cmd (which writes it to `report`), None if the run wrote none."""
-    if os.path.exists(report):
-        os.remove(report)
-    log = run(cmd, timeout=timeout)
-    if not os.path.exists(report):
-        print(log[-1500:])
-        return None
-    return json.load(open(report))
 
 
 FSI_DT = (5e-4, 2.5e-4, 1.25e-4)

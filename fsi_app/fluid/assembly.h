@@ -9,7 +9,7 @@
    velocity), t a prescribed traction on groups of faces (natural: stress-free) and f a body
    force (manufactured solutions). The Jacobian is exact in (u, p), convection included, and
    holds the shape derivatives (in d_f: the moved geometry, the mesh velocity, the moved
-   traction faces) if asked, by central differences of the element residual; without them
+   traction faces) if asked, by forward differences of the element residual; without them
    Newton is a quasi-Newton method on a moving mesh (-snes_mf_operator restores the exact
    derivative with this matrix as preconditioner). */
 #pragma once

@@ -4,6 +4,8 @@
 
 namespace fsi {
 
+static PetscLogEvent AssembleJacobian;
+
 static PetscErrorCode SystemResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
 {
   const System      &s = *(System *)ctx;
@@ -15,7 +17,11 @@ static PetscErrorCode SystemResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
   PetscCall(VecZeroEntries(Fl));
   PetscCall(VecGetArrayRead(Xl, &x));
   PetscCall(VecGetArray(Fl, &f));
-  for (Block *b : s.blocks) PetscCall(b->Residual(x, f));
+  for (size_t k = 0; k < s.blocks.size(); k++) {
+    PetscCall(PetscLogEventBegin(s.residualEvent[k], 0, 0, 0, 0));
+    PetscCall(s.blocks[k]->Residual(x, f));
+    PetscCall(PetscLogEventEnd(s.residualEvent[k], 0, 0, 0, 0));
+  }
   PetscCall(VecRestoreArray(Fl, &f));
   PetscCall(VecRestoreArrayRead(Xl, &x));
   PetscFunctionReturn(0);
@@ -80,15 +86,28 @@ static PetscErrorCode SystemJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
   if (!s.laidOut) PetscCall(Preallocate(s, x, P));
   s.laidOut = PETSC_TRUE;
   PetscCall(MatZeroEntries(P));
-  for (Block *b : s.blocks) PetscCall(b->Jacobian(x, P));
+  for (size_t k = 0; k < s.blocks.size(); k++) {
+    PetscCall(PetscLogEventBegin(s.jacobianEvent[k], 0, 0, 0, 0));
+    PetscCall(s.blocks[k]->Jacobian(x, P));
+    PetscCall(PetscLogEventEnd(s.jacobianEvent[k], 0, 0, 0, 0));
+  }
   PetscCall(VecRestoreArrayRead(Xl, &x));
+  PetscCall(PetscLogEventBegin(AssembleJacobian, P, 0, 0, 0));
   PetscCall(AssembleOperators(J, P));
+  PetscCall(PetscLogEventEnd(AssembleJacobian, P, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode SystemAttach(DM dm, System &s)
 {
   PetscFunctionBegin;
+  if (!AssembleJacobian) PetscCall(PetscLogEventRegister("AssembleJacobian", MAT_CLASSID, &AssembleJacobian));
+  s.residualEvent.resize(s.blocks.size());
+  s.jacobianEvent.resize(s.blocks.size());
+  for (size_t k = 0; k < s.blocks.size(); k++) {
+    PetscCall(PetscLogEventRegister((std::string("Residual_") + s.blocks[k]->Name()).c_str(), SNES_CLASSID, &s.residualEvent[k]));
+    PetscCall(PetscLogEventRegister((std::string("Jacobian_") + s.blocks[k]->Name()).c_str(), SNES_CLASSID, &s.jacobianEvent[k]));
+  }
   PetscCall(DMSNESSetFunctionLocal(dm, SystemResidual, &s));
   PetscCall(DMSNESSetJacobianLocal(dm, SystemJacobian, &s));
   PetscFunctionReturn(0);

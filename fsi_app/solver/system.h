@@ -13,6 +13,7 @@ struct System {
   std::vector<Block *> blocks;
   PetscReal            time = 0; /* of the step being solved (statics: the load fraction) */
   PetscBool            laidOut = PETSC_FALSE; /* the matrix's pattern is set (SystemCreateMatrix) */
+  std::vector<PetscLogEvent> residualEvent, jacobianEvent; /* per block: Residual_<block>, Jacobian_<block> */
 };
 
 /* The Jacobian's matrix, without storage yet: the first Jacobian evaluation lays it out with
@@ -22,7 +23,9 @@ struct System {
    the pattern are errors. */
 PetscErrorCode SystemCreateMatrix(DM dm, Mat *J);
 
-/* The system's residual and Jacobian become dm's DMSNES local callbacks; `s` must outlive dm. */
+/* The system's residual and Jacobian become dm's DMSNES local callbacks; `s` must outlive dm.
+   Each block's share is logged (-log_view: Residual_<block>, Jacobian_<block>, and
+   AssembleJacobian for the matrix's assembly across ranks). */
 PetscErrorCode SystemAttach(DM dm, System &s);
 
 } // namespace fsi
