@@ -848,8 +848,8 @@ def gdsw_view(out):
 @case
 def fsi_facsi_gdsw():
     """FaCSI as composed in scenes/fsi_facsi.opts (GDSW on the structure, AMG on the geometry,
-    SIMPLE with AMG on the fluid) reaches MUMPS's state in at most 35 GMRES iterations per
-    Newton step (measured 27 with 4 subdomains per rank). gdsw inside the structure split gets
+    SIMPLE with AMG on the fluid) reaches MUMPS's state in at most 25 GMRES iterations per
+    Newton step (measured 17.7 with 4 subdomains per rank; an exact structure solve gives 15.7). gdsw inside the structure split gets
     what it gets as the whole system's preconditioner: -ksp_view on one rank shows the same 8
     subdomains, 3 dofs per node, the 6 rigid-body modes, interface components and coarse
     dimension as the wall alone (-physics structure, -pc_type gdsw) on the same mesh and
@@ -858,7 +858,7 @@ def fsi_facsi_gdsw():
     facsi = fsi("-t_final", 1e-3, "-options_file", FACSI, "-structure_subdomains", 4, "-ksp_view")
     its = [s["krylov"] / s["newton"] for s in facsi["steps"]]
     print("GMRES per Newton", its)
-    assert max(its) <= 35, its
+    assert max(its) <= 25, its
     between(abs(facsi["results"]["max_displacement"] / direct["results"]["max_displacement"] - 1), 0, 1e-6, "FaCSI / MUMPS max displacement")
     between(abs(facsi["results"]["pressure_l2_norm"] / direct["results"]["pressure_l2_norm"] - 1), 0, 1e-6, "FaCSI / MUMPS pressure L2 norm")
     assert gdsw_view(facsi["out"])[:3] == [8, 3, 6], gdsw_view(facsi["out"])
