@@ -898,14 +898,17 @@ def fsi_restart_output():
 def fsi_bad_input():
     """A mesh without an interface group, an interface group that is not between the fluid
     and the wall, a no-slip interface, a static coupled run, an incomplete or unknown block
-    list, a probe outside the fluid: a sentence naming the cause."""
+    list, a probe outside the fluid, FaCSI's fluid PC told a multiplier field the split does not
+    have: a sentence naming the cause."""
     cases = ((["-mesh", os.path.join(MESHES, "cube_L0.msh")], "has no physical group"),
              (["-geometry_interface", "outer_wall"], "-geometry_interface outer_wall: the group's faces must lie between cells of -fluid_region fluid and of -structure_region wall"),
              (["-fluid_noslip", "interface"], "-fluid_noslip interface: on the interface interface the fluid moves with the wall"),
              (["-dt", 0], "-dt 0: the coupled problem is dynamic"),
              (["-blocks", "structure,coupling"], "-blocks: the coupling ties structure, fluid and geometry: name all four"),
              (["-blocks", "structure,wall"], "-blocks: unknown block 'wall' (structure, fluid, geometry, coupling)"),
-             (["-fluid_probes", "5,0,1"], "-fluid_probes: the point (5., 0., 1.) is not in the field's region"))
+             (["-fluid_probes", "5,0,1"], "-fluid_probes: the point (5., 0., 1.) is not in the field's region"),
+             (["-options_file", FACSI, "-fieldsplit_fluid_pc_facsi_fluid_multiplier_field", "lambda"],
+              "PCFACSIFLUID: the split has no field called lambda (-pc_facsi_fluid_multiplier_field)"))
     for opts, msg in cases:
         out = run([APP, "-options_file", FSI] + [str(o) for o in opts], 2, fail=True)
         assert msg in out, (msg, out[-2000:])
