@@ -141,19 +141,21 @@ static PetscErrorCode CheckFinished(const Scene &sc, const Blocks &b, SNES snes,
   PetscFunctionBegin;
   if (sc.Dynamic()) PetscCall(PetscSNPrintf(cure, sizeof(cure), "reduce the time step (-dt %g now) or allow more halvings (-max_step_cuts %" PetscInt_FMT " now)", (double)sc.dt, sc.maxCuts));
   else PetscCall(PetscSNPrintf(cure, sizeof(cure), "apply the load in more increments (-structure_load_steps %" PetscInt_FMT " now) or allow more halvings (-max_step_cuts %" PetscInt_FMT " now)", sc.loadSteps, sc.maxCuts));
-  if (reason == SNES_DIVERGED_FUNCTION_DOMAIN) {
+  if (reason == SNES_DIVERGED_FUNCTION_DOMAIN || reason == SNES_DIVERGED_LINE_SEARCH) { /* the line search may end on a point with no value */
     PetscMPIInt rank, first = 0, any;
     PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
     for (const Block *blk : b.list)
       if (cause.empty()) cause = blk->InvertedCause();
     PetscMPIInt mine = cause.empty() ? PETSC_MPI_INT_MAX : rank;
     PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD)); /* the cause as the first rank that saw it says */
-    first = any == PETSC_MPI_INT_MAX ? 0 : any;
-    int len = (int)cause.size();
-    PetscCallMPI(MPI_Bcast(&len, 1, MPI_INT, first, PETSC_COMM_WORLD));
-    cause.resize(len);
-    PetscCallMPI(MPI_Bcast(&cause[0], len, MPI_CHAR, first, PETSC_COMM_WORLD));
-    SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton stopped in step %" PetscInt_FMT ": %s in every step the line search tried, also on the step halved %" PetscInt_FMT " times; %s", step, cause.empty() ? "the residual had no value" : cause.c_str(), sc.maxCuts, cure);
+    if (reason == SNES_DIVERGED_FUNCTION_DOMAIN || any != PETSC_MPI_INT_MAX) {
+      first   = any == PETSC_MPI_INT_MAX ? 0 : any;
+      int len = (int)cause.size();
+      PetscCallMPI(MPI_Bcast(&len, 1, MPI_INT, first, PETSC_COMM_WORLD));
+      cause.resize(len);
+      PetscCallMPI(MPI_Bcast(&cause[0], len, MPI_CHAR, first, PETSC_COMM_WORLD));
+      SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton stopped in step %" PetscInt_FMT ": %s in every step the line search tried, also on the step halved %" PetscInt_FMT " times; %s", step, cause.empty() ? "the residual had no value" : cause.c_str(), sc.maxCuts, cure);
+    }
   }
   if (reason == SNES_DIVERGED_LINEAR_SOLVE) {
     KSP                ksp;
@@ -196,6 +198,7 @@ int main(int argc, char **argv)
   PetscBool       initial = PETSC_FALSE;
   PetscCall(TimeHistoryCreate(dm, sc.scheme, step, dynamic, history));
   for (Block *blk : b.list) blk->Attach(snes, &history);
+  b.system.snes = snes;
   PetscCall(VecSet(x, 0.0));
   for (Block *blk : b.list) {
     PetscBool set;

@@ -78,7 +78,6 @@ static PetscErrorCode ReportInverted(const FluidForms &fb, PetscInt inverted)
   PetscFunctionBegin;
   if (!inverted) PetscFunctionReturn(0);
   PetscCall(PetscInfo(fb.snes, "%" PetscInt_FMT " quadrature points of the moved fluid mesh with J <= 0\n", inverted));
-  if (fb.snes) PetscCall(SNESSetFunctionDomainError(fb.snes));
   PetscFunctionReturn(0);
 }
 

@@ -17,11 +17,17 @@ static PetscErrorCode SystemResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
   PetscCall(VecZeroEntries(Fl));
   PetscCall(VecGetArrayRead(Xl, &x));
   PetscCall(VecGetArray(Fl, &f));
+  PetscMPIInt inverted = 0, anywhere;
   for (size_t k = 0; k < s.blocks.size(); k++) {
     PetscCall(PetscLogEventBegin(s.residualEvent[k], 0, 0, 0, 0));
     PetscCall(s.blocks[k]->Residual(x, f));
     PetscCall(PetscLogEventEnd(s.residualEvent[k], 0, 0, 0, 0));
+    if (!s.blocks[k]->InvertedCause().empty()) inverted = 1;
   }
+  /* every rank must see the domain error: the line search branches on it, and ranks that
+     branch apart wait in different collectives */
+  PetscCallMPI(MPI_Allreduce(&inverted, &anywhere, 1, MPI_INT, MPI_MAX, PetscObjectComm((PetscObject)dm)));
+  if (anywhere && s.snes) PetscCall(SNESSetFunctionDomainError(s.snes));
   PetscCall(VecRestoreArray(Fl, &f));
   PetscCall(VecRestoreArrayRead(Xl, &x));
   PetscFunctionReturn(0);

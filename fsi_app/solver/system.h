@@ -13,6 +13,7 @@ struct System {
   std::vector<Block *> blocks;
   PetscReal            time = 0; /* of the step being solved (statics: the load fraction) */
   PetscBool            laidOut = PETSC_FALSE; /* the matrix's pattern is set (SystemCreateMatrix) */
+  SNES                 snes    = nullptr;     /* told of a residual with no value (an inverted cell on any rank) */
   std::vector<PetscLogEvent> residualEvent, jacobianEvent; /* per block: Residual_<block>, Jacobian_<block> */
 };
 

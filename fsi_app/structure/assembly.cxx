@@ -153,10 +153,7 @@ PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f
     }
   PetscCall(TimeHistoryRestorePast(sb.history, past));
   ((StructureForms *)ctx)->inverted = inverted;
-  if (inverted) {
-    PetscCall(PetscInfo(sb.snes, "%" PetscInt_FMT " quadrature points with det F <= 0: the step is outside the domain of the law\n", inverted));
-    if (sb.snes) PetscCall(SNESSetFunctionDomainError(sb.snes));
-  }
+  if (inverted) PetscCall(PetscInfo(sb.snes, "%" PetscInt_FMT " quadrature points with det F <= 0: the step is outside the domain of the law\n", inverted));
   PetscFunctionReturn(0);
 }
 
