@@ -262,7 +262,9 @@ int main(int argc, char **argv)
   PetscCall(VecNorm(x, NORM_2, &xnorm));
   report.results.insert(report.results.end(), {{std::string("max_") + what, hmax}, {std::string(what) == "displacement" ? "displacement_norm" : "solution_norm", xnorm}});
   for (Block *blk : b.list) PetscCall(blk->Results(dm, x, dynamic ? loop.steps * step : 1.0, report));
-  PetscCall(PhasesMeasure(PETSC_COMM_WORLD, t1 - t0, report.phases));
+  std::vector<std::string> splits;
+  for (const Split &s : b.Splits()) splits.push_back(s.name);
+  PetscCall(PhasesMeasure(PETSC_COMM_WORLD, t1 - t0, splits, report.phases));
   const Phases &p = report.phases;
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "seconds: assembly %.3f preconditioner setup %.3f", p.assembly, p.setup));
   for (const auto &s : p.splitSetUp) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s%s %.3f", &s == &p.splitSetUp.front() ? " (" : ", ", s.first.c_str(), s.second));

@@ -157,7 +157,7 @@ PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
    differences of the element residual (the mesh velocity w moves with d_f by c_0 / dt). The
    step is sqrt(machine epsilon) of the cell's size, where truncation and round-off are both
    ~1e-8 relative: Newton stays quadratic down to the coupled tolerance, at half the cost of
-   central differences (31 cell residuals instead of 60; most of the assembly). */
+   central differences (31 cell residuals instead of 60). */
 static void ShapeDerivatives(const FluidForms &fb, PetscInt k, const CellState &s, const std::vector<std::pair<const TractionGroup *, const CellFace *>> &faces, PetscReal K[34 * 30])
 {
   const CellGeometry &g = fb.velocity.geom[k];

@@ -26,7 +26,7 @@ static PetscErrorCode EventTime(const char *name, double *t)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PhasesMeasure(MPI_Comm comm, double total, Phases &p)
+PetscErrorCode PhasesMeasure(MPI_Comm comm, double total, const std::vector<std::string> &splits, Phases &p)
 {
   double        t[4], tmax[4];
   struct rusage u;
@@ -39,12 +39,13 @@ PetscErrorCode PhasesMeasure(MPI_Comm comm, double total, Phases &p)
   PetscCallMPI(MPIU_Allreduce(t, tmax, 4, MPI_DOUBLE, MPI_MAX, comm));
   p.assembly = tmax[0] + tmax[1], p.setup = tmax[2], p.krylov = tmax[3], p.total = total;
   p.splitSetUp.clear();
-  for (const char *split : {"structure", "geometry", "fluid"}) {
-    PetscLogEvent id;
-    double        ts, tsmax;
-    PetscCall(PetscLogEventGetId((std::string("SplitSetUp_") + split).c_str(), &id));
-    if (id < 0) continue; /* not a split of this run */
-    PetscCall(EventTime((std::string("SplitSetUp_") + split).c_str(), &ts));
+  for (const std::string &split : splits) {
+    const std::string event = "SplitSetUp_" + split;
+    PetscLogEvent     id;
+    double            ts, tsmax;
+    PetscCall(PetscLogEventGetId(event.c_str(), &id));
+    if (id < 0) continue; /* the PC was not split by name */
+    PetscCall(EventTime(event.c_str(), &ts));
     PetscCallMPI(MPIU_Allreduce(&ts, &tsmax, 1, MPI_DOUBLE, MPI_MAX, comm));
     p.splitSetUp.push_back({split, tsmax});
   }

@@ -22,7 +22,8 @@ struct Phases {
 
 /* Start PETSc's event log if -log_view has not (the phases read it). */
 PetscErrorCode PhasesBegin();
-PetscErrorCode PhasesMeasure(MPI_Comm comm, double total, Phases &p);
+/* `splits`: the named splits whose set-up (log event SplitSetUp_<name>) is reported, if run. */
+PetscErrorCode PhasesMeasure(MPI_Comm comm, double total, const std::vector<std::string> &splits, Phases &p);
 
 struct RunReport {
   std::vector<std::pair<std::string, PetscInt>>              unknowns;
