@@ -3,6 +3,7 @@ commands that produced them."""
 import csv
 import json
 import os
+import re
 import signal
 import subprocess
 
@@ -31,9 +32,16 @@ def loadavg():
     return " ".join(f"{x:.2f}" for x in os.getloadavg())
 
 
+def portable(cmd):
+    """A command line as a reader reruns it from the repository root: paths inside the repository
+    relative to it, a temporary report file named report.json."""
+    cmd = cmd.replace(TOP + "/", "")
+    return re.sub(r"/tmp/[^ ]*/([^/ ]+\.json)", r"\1", cmd)
+
+
 def write_results(out, rows, cmds, producer, load_at_start=None):
-    """out.csv with one row per run, out.cmd with the command of each run (and the load average
-    at the start, if given, and now)."""
+    """out.csv with one row per run, out.cmd with the command of each run, to be run from the
+    repository root (and the load average at the start, if given, and now)."""
     if load_at_start is not None:
         producer += f"\n# load average (1, 5, 15 min) at start: {load_at_start}, at end: {loadavg()}"
     with open(out + ".csv", "w", newline="") as f:
@@ -41,7 +49,7 @@ def write_results(out, rows, cmds, producer, load_at_start=None):
         w.writeheader()
         w.writerows(rows)
     with open(out + ".cmd", "w") as f:
-        f.write(f"# produced by {producer}\n" + "\n".join(cmds) + "\n")
+        f.write(f"# produced by {producer}; run from the repository root\n" + "\n".join(portable(c) for c in cmds) + "\n")
 
 
 def run_report(cmd, report, timeout=None):
