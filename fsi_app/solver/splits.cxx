@@ -1,5 +1,6 @@
 #include "splits.h"
 #include <petscdm.h>
+#include <petsc/private/snesimpl.h> /* KSPPreSolve_SNESEW: our pre-solve hook replaces SNES's */
 
 namespace fsi {
 
@@ -19,13 +20,17 @@ static PetscErrorCode DestroySplitSetUps(void *ctx)
 }
 
 /* Before the Krylov iteration: the fieldsplit's matrices for this Jacobian, then each split's
-   preconditioner, rebuilt or kept as its block asks. */
-static PetscErrorCode SetUpSplits(KSP ksp, Vec, Vec, void *ctx)
+   preconditioner, rebuilt or kept as its block asks. A KSP has one pre-solve hook, so this one
+   also does SNES's: the Eisenstat-Walker tolerance (-snes_ksp_ew). */
+static PetscErrorCode SetUpSplits(KSP ksp, Vec b, Vec x, void *ctx)
 {
   SplitSetUps *s = (SplitSetUps *)ctx;
   PetscInt     it;
+  PetscBool    ew;
 
   PetscFunctionBegin;
+  PetscCall(SNESKSPGetUseEW(s->snes, &ew));
+  if (ew) PetscCall(KSPPreSolve_SNESEW(ksp, b, x, s->snes));
   PetscCall(KSPSetUp(ksp));
   PetscCall(SNESGetIterationNumber(s->snes, &it));
   for (size_t k = 0; k < s->ksp.size(); k++) {
