@@ -4,7 +4,7 @@
 
 namespace fsi {
 
-static PetscLogEvent AssembleJacobian;
+static PetscLogEvent AssembleJacobian, LayOutJacobian;
 
 static PetscErrorCode SystemResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
 {
@@ -89,7 +89,11 @@ static PetscErrorCode SystemJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
   PetscFunctionBegin;
   PetscCall(InsertEssentialValues(dm, s.time, Xl));
   PetscCall(VecGetArrayRead(Xl, &x));
-  if (!s.laidOut) PetscCall(Preallocate(s, x, P));
+  if (!s.laidOut) {
+    PetscCall(PetscLogEventBegin(LayOutJacobian, P, 0, 0, 0));
+    PetscCall(Preallocate(s, x, P));
+    PetscCall(PetscLogEventEnd(LayOutJacobian, P, 0, 0, 0));
+  }
   s.laidOut = PETSC_TRUE;
   PetscCall(MatZeroEntries(P));
   for (size_t k = 0; k < s.blocks.size(); k++) {
@@ -107,7 +111,10 @@ static PetscErrorCode SystemJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
 PetscErrorCode SystemAttach(DM dm, System &s)
 {
   PetscFunctionBegin;
-  if (!AssembleJacobian) PetscCall(PetscLogEventRegister("AssembleJacobian", MAT_CLASSID, &AssembleJacobian));
+  if (!AssembleJacobian) {
+    PetscCall(PetscLogEventRegister("AssembleJacobian", MAT_CLASSID, &AssembleJacobian));
+    PetscCall(PetscLogEventRegister("LayOutJacobian", MAT_CLASSID, &LayOutJacobian));
+  }
   s.residualEvent.resize(s.blocks.size());
   s.jacobianEvent.resize(s.blocks.size());
   for (size_t k = 0; k < s.blocks.size(); k++) {
