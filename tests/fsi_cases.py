@@ -311,9 +311,10 @@ def structure_oscillation():
     equation q(1/z)^2 = -(omega dt)^2 (q = 1 - y for backward Euler, (3 - 4y + y^2)/2 for BDF2:
     the first difference applied twice) with omega the exact radial frequency of the cylinder
     (23.234 rad/s, Bessel functions by shooting; measured |q|/dt 0.2 % above it, the P2 mesh's
-    stiffness) and q imaginary to 1e-3 (measured 1e-6): the energy lost per step is exactly the
-    scheme's amplification factor's, backward Euler keeping 14 % of the energy per period
-    (|z| = 0.954 per step), BDF2 92 % (|z| = 0.998), the exact motion 100 %."""
+    stiffness) and q imaginary to 1e-3 (measured 1e-6): the motion is damped per step by the
+    scheme's amplification factor at that frequency and by nothing else, backward Euler keeping
+    14 % of the energy per period (|z| = 0.954 per step), BDF2 92 % (|z| = 0.998), the exact
+    motion all of it."""
     E, nu, Ri, Ro, r = 1000, 0.3, 1.0, 2.0, 1.5
     omega = radial_frequency(E, nu, 1.0, Ri, Ro)
     dt = 2 * math.pi / omega / 20  # 20 steps per period
@@ -403,34 +404,35 @@ def check_seconds(r, what, split):
     assembly never overlaps the preconditioner's set-up or the Krylov iterations, and those two
     do not overlap when the set-up is all in the outer PCSetUp (split preconditioners set up
     their inner solvers at first use, inside KSPSolve: then only each pair with assembly is
-    bounded). The phases are maxima over the ranks: 1 % slack."""
-    s = r["seconds"]
+    bounded). One rank: on several the phases are each rank's largest, not one rank's sum; 1 ms
+    for the report's 4 decimals."""
+    s, bound = r["seconds"], r["seconds"]["total"] + 1e-3
     print(what, s, "peak memory", r["peak_memory_mib"], "MiB")
     for phase in ("assembly", "preconditioner_setup", "krylov", "total"):
         between(s[phase], 1e-6, s["total"], f"{what}: seconds in {phase}")
-    between(s["assembly"] + s["preconditioner_setup"], 0, 1.01 * s["total"], f"{what}: assembly + preconditioner set-up (s)")
-    between(s["assembly"] + s["krylov"], 0, 1.01 * s["total"], f"{what}: assembly + Krylov (s)")
+    between(s["assembly"] + s["preconditioner_setup"], 0, bound, f"{what}: assembly + preconditioner set-up (s)")
+    between(s["assembly"] + s["krylov"], 0, bound, f"{what}: assembly + Krylov (s)")
     if not split:
-        between(s["assembly"] + s["preconditioner_setup"] + s["krylov"], 0, 1.01 * s["total"], f"{what}: sum of the phases (s)")
+        between(s["assembly"] + s["preconditioner_setup"] + s["krylov"], 0, bound, f"{what}: sum of the phases (s)")
 
 
 @case
 def run_report():
-    """The run report's seconds and memory (-report): the phases are present, positive and
-    bounded by the time loop's wall time (check_seconds) for the wall with gdsw (one PC: the
+    """The run report's seconds and memory (-report), one rank: the phases are present, positive
+    and bounded by the time loop's wall time (check_seconds) for the wall with gdsw (one PC: the
     three phases sum to at most the total) and for the fluid with the Schur fieldsplit; the peak
-    resident memory summed over the ranks exceeds the assembled operator's AIJ storage (12
-    bytes per nonzero: a value and a 32-bit column index; the nonzeros from -ksp_view)."""
+    resident memory exceeds the assembled operator's AIJ storage (12 bytes per nonzero: a value
+    and a 32-bit column index; the nonzeros from -ksp_view; measured 14 times as much)."""
     tmp = tempfile.mkdtemp()
     out = run([APP, "-mesh", os.path.join(MESHES, "tube1_L0.msh"), "-structure_pressure", 1330, "-E", 4e5, "-nu", 0.3] + WALL +
-              ["-pc_type", "gdsw", "-structure_subdomains", 4, "-ksp_view", "-report", os.path.join(tmp, "wall.json")], 2)
+              ["-pc_type", "gdsw", "-structure_subdomains", 4, "-ksp_view", "-report", os.path.join(tmp, "wall.json")])
     wall = report(os.path.join(tmp, "wall.json"))
     check_seconds(wall, "wall, gdsw", split=False)
     n = sum(wall["unknowns"].values())
     nonzeros = int(re.findall(rf"rows={n}, cols={n}\s+total: nonzeros=(\d+)", out)[-1])
     between(wall["peak_memory_mib"] * 2**20 / (12 * nonzeros), 1, 1e4, f"peak memory / AIJ storage of the operator ({nonzeros} nonzeros)")
     run([APP, "-options_file", os.path.join(MESHES, "..", "scenes", "fluid_tube1_pulse.opts"), "-mesh", os.path.join(MESHES, "tube1_L0.msh"),
-         "-t_final", 1e-3, "-report", os.path.join(tmp, "fluid.json")], 2)
+         "-t_final", 1e-3, "-report", os.path.join(tmp, "fluid.json")])
     check_seconds(report(os.path.join(tmp, "fluid.json")), "fluid, Schur fieldsplit", split=True)
     shutil.rmtree(tmp)
 
