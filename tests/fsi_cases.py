@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
 """ctest cases for fsi_app: each runs programs and asserts numbers or messages from their output."""
+import cmath
 import json
 import math
 import os
@@ -106,8 +107,12 @@ def structure_mms_rate():
 def structure_lame():
     """Lame's thick-walled cylinder (quarter, symmetry and plane-strain conditions fix single
     components, so GDSW works on dofs rather than whole nodes) under internal pressure: the
-    relative L2 error against u_r = A r + B / r falls with h (rate -> 2: the straight-sided
-    elements' geometric error), the inner displacement approaches A Ri + B / Ri."""
+    relative L2 and H1 errors against u_r = A r + B / r fall at rate 2 as h halves (levels 1 -> 2:
+    1.75-2.3, measured 1.82 and 1.82). P2 alone would give 3 and 2, but the straight-sided
+    tetrahedra replace the curved surfaces (the pressure's and the free one) by chords O(h^2)
+    away: the solution changes by O(h^2) in every norm, so both rates are 2 (levels 0 -> 1, 142
+    and 562 cells, are pre-asymptotic: 1.37 and 1.09). The inner displacement approaches
+    A Ri + B / Ri."""
     opts = ["-structure_clamp", "sym_x:x,sym_y:y,top:z,bottom:z", "-structure_pressure", 1, "-structure_pressure_group", "inner",
             "-E", 1000, "-nu", 0.3, "-lame", "1,2", "-snes_type", "ksponly", "-ksp_type", "cg", "-ksp_rtol", "1e-12",
             "-pc_type", "gdsw", "-structure_subdomains", 4]
@@ -115,8 +120,8 @@ def structure_lame():
     e = [x["l2_relative"] for x in r]
     print("relative L2 errors", e, "rates", rates(e), "H1", [x["h1_relative"] for x in r], rates([x["h1_relative"] for x in r]))
     assert e[0] > e[1] > e[2] and e[2] < 3e-3, e
-    between(rates(e)[1], 1.6, 3.2, "L2 rate, levels 1 -> 2")
-    between(rates([x["h1_relative"] for x in r])[1], 1.3, 2.3, "H1 rate, levels 1 -> 2")
+    between(rates(e)[1], 1.75, 2.3, "L2 rate, levels 1 -> 2")
+    between(rates([x["h1_relative"] for x in r])[1], 1.75, 2.3, "H1 rate, levels 1 -> 2")
     exact = 1.3 / (1000 * 3) * (0.4 + 4)  # A + B at r = Ri = 1
     between(r[2]["dmax"] / exact, 0.99, 1.01, "inner displacement / exact")
     between(solve("-mesh", os.path.join(MESHES, "quarter_cylinder_L1.msh"), *opts, np=2)["l2_relative"] / e[1], 0.999, 1.001, "2 ranks / 1 rank error")
@@ -162,10 +167,37 @@ def structure_jacobian():
         assert len(ratios) >= 2 and max(ratios) < 1e-6, ratios
 
 
+def small_strain_limit(law, shear, bulk, p):
+    """A hyperelastic wall of tube #1 against the linear wall with its small-strain moduli (E and
+    nu from the shear and bulk moduli), under the pressures p and p/2 (Newton to 1e-12, LU):
+    the ratios r(p), r(p/2) of their largest displacements. A smooth law agrees with its
+    linearisation to first order in the load: r - 1 is proportional to p, and the extrapolation
+    2 r(p/2) - r(p) to p = 0 is 1 up to O(p^2)."""
+    E, nu = 9 * bulk * shear / (3 * bulk + shear), (3 * bulk - 2 * shear) / (2 * (3 * bulk + shear))
+    tmp = tempfile.mkdtemp()
+    wall = ["-mesh", os.path.join(MESHES, "tube1_L0.msh"), "-structure_region", "wall", "-structure_clamp", "wall_inlet_ring,wall_outlet_ring",
+            "-snes_type", "newtonls", "-snes_rtol", 1e-12, "-snes_atol", 1e-20, "-ksp_type", "preonly", "-pc_type", "lu", "-report", os.path.join(tmp, "r.json")]
+
+    def dmax(*opts):
+        run([APP] + [str(o) for o in wall + list(opts)])
+        return report(os.path.join(tmp, "r.json"))["results"]["max_displacement"]
+
+    linear = dmax("-material", "linear", "-E", E, "-nu", nu, "-structure_pressure", p)  # linear in p: at p/2 half of it
+    r = [dmax(*law, "-structure_pressure", load) / (linear * load / p) for load in (p, p / 2)]
+    shutil.rmtree(tmp)
+    print(law, "small-strain E", E, "nu", nu, "ratios to the linear wall at p and p/2", r)
+    between((r[0] - 1) / (r[1] - 1), 1.9, 2.1, f"{law[1]}: (r(p) - 1) / (r(p/2) - 1), first order in p")
+    between(abs(2 * r[1] - r[0] - 1), 0, 3e-4, f"{law[1]}: |2 r(p/2) - r(p) - 1|, the ratio extrapolated to p = 0")
+    return r
+
+
 @case
 def structure_neohooke():
     """Neo-Hooke wall of tube #1 under the seed's pressure: Newton converges in a few steps to the
-    same displacement on 1 and 2 ranks, larger than the (stiffer) linear elastic wall's; a load
+    same displacement on 1 and 2 ranks; in the small-strain limit it is the linear wall with
+    its moduli (E = 9 kappa mu / (3 kappa + mu) = 2.30e5, nu = 0.490): the ratio of their
+    displacements falls to 1 linearly with the load (r - 1 = 0.0103 at 1330 dyn/cm^2, 0.0051
+    at half of it: 1.9-2.1 apart; extrapolated to zero load 1 within 3e-4, measured 1e-4); a load
     applied in 4 increments reaches the same state as in one."""
     mesh = os.path.join(MESHES, "tube1_L0.msh")
     load = ["-mesh", mesh, "-structure_pressure", 1330, "-material", "neohooke"] + WALL
@@ -173,7 +205,7 @@ def structure_neohooke():
     r = [solve(*load, "-pc_type", "gdsw", "-structure_subdomains", 8 // np, np=np) for np in (1, 2)]
     print(r)
     assert r[0]["newton"] <= 6 and abs(r[0]["dmax"] - r[1]["dmax"]) <= 1e-6 * r[0]["dmax"], r
-    between(r[0]["dmax"] / 1.574013e-03, 1.2, 2.5, "Neo-Hooke / linear elastic displacement")
+    between(small_strain_limit(["-material", "neohooke"], 7.72e4, 3.833e6, 1330)[0] - 1, 0, 0.02, "Neo-Hooke / linearised wall - 1 at the seed's load")
     one = solve("-mesh", os.path.join(MESHES, "cube_L0.msh"), "-material", "neohooke", "-structure_pressure", 4e4, *CUBE_LOAD)
     four = solve("-mesh", os.path.join(MESHES, "cube_L0.msh"), "-material", "neohooke", "-structure_pressure", 4e4,
                  "-structure_load_steps", 4, *CUBE_LOAD)
@@ -193,21 +225,120 @@ def structure_large_load():
     assert "the linear solver failed in step 1 (DIVERGED_ITS, also on the step halved 1 times)" in out and "-pc_asm_type basic" in out
 
 
+def lame_radial(r, E, nu, p, Ri, Ro):
+    """Lame's plane-strain radial displacement u_r = A r + B / r of a cylinder under internal
+    pressure p."""
+    A = (1 + nu) * (1 - 2 * nu) * p * Ri**2 / (E * (Ro**2 - Ri**2))
+    B = (1 + nu) * p * Ri**2 * Ro**2 / (E * (Ro**2 - Ri**2))
+    return A * r + B / r
+
+
 @case
 def structure_dynamics():
     """The wall under the seed's pressure pulse, backward differences with dt = 5e-4 (the harder
     step: less mass): one Newton step per time step for the linear law; GDSW needs no more CG
     iterations than the one-level method on the same subdomains (the mass term helps the
-    latter: 76 against 85 here); the motion is the same on 1 and 2 ranks."""
+    latter: 76 against 85 here); the motion is the same on 1 and 2 ranks. A step load on an
+    undamped wall never moves it beyond twice the static displacement, here Lame's plane-strain
+    u_r(Ri) = 1.594e-3 cm (the tube is clamped at both ends: no axial strain at mid-length); after
+    4 steps (backward Euler damps the breathing mode, period 1.85 ms, by |z|^4 = 1/16) the
+    mid-wall point (0.18, 0, 1.25) is within 10 % of Lame's u_r(0.18) (measured -2 %)."""
     base = ["-mesh", os.path.join(MESHES, "tube1_L0.msh"), "-structure_pressure", 1330, "-E", 4e5, "-nu", 0.3,
             "-dt", 5e-4, "-t_final", 2e-3, "-structure_pressure_until", 3e-3] + WALL
-    g1 = solve(*base, "-pc_type", "gdsw", "-structure_subdomains", 8)
+    tmp = tempfile.mkdtemp()
+    g1 = solve(*base, "-pc_type", "gdsw", "-structure_subdomains", 8, "-structure_probes", "0.18,0,1.25", "-report", os.path.join(tmp, "r.json"))
     g2 = solve(*base, "-pc_type", "gdsw", "-structure_subdomains", 4, np=2)
     os1 = solve(*base, "-pc_type", "gdsw", "-structure_subdomains", 8, "-pc_gdsw_coarse_space", "none")
     print(g1, g2, os1)
     assert g1["newton"] == 4 and abs(g1["dmax"] - g2["dmax"]) <= 1e-6 * g1["dmax"]
-    assert 0 < g1["dmax"] < 1.574013e-03 * 2, g1
     assert os1["krylov"] >= g1["krylov"], (os1, g1)
+    lame = lambda r: lame_radial(r, 4e5, 0.3, 1330, 0.15, 0.21)
+    between(g1["dmax"] / lame(0.15), 0, 2, "largest displacement / Lame's u_r(Ri)")
+    ur = report(os.path.join(tmp, "r.json"))["probes"][0]["values"][-3]
+    between(ur / lame(0.18), 0.9, 1.1, "u_r(0.18) at t = 2 ms / Lame's")
+    shutil.rmtree(tmp)
+
+
+def radial_frequency(E, nu, rho, Ri, Ro, n=400):
+    """The lowest angular frequency of the free radial (breathing) vibration of a thick-walled
+    cylinder in plane strain: u'' + u'/r - u/r^2 + k^2 u = 0 (Bessel J1, Y1 of k r) with
+    (lambda + 2 mu) u' + lambda u / r = 0 at Ri and Ro; k by shooting (RK4) and bisection,
+    omega = k sqrt((lambda + 2 mu) / rho)."""
+    lam, mu = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
+    M, h = lam + 2 * mu, (Ro - Ri) / n
+
+    def outer_stress(k):
+        r, y = Ri, (1.0, -lam / (M * Ri))
+        f = lambda r, y: (y[1], -y[1] / r + y[0] / r**2 - k * k * y[0])
+        for _ in range(n):
+            k1 = f(r, y)
+            k2 = f(r + h / 2, (y[0] + h / 2 * k1[0], y[1] + h / 2 * k1[1]))
+            k3 = f(r + h / 2, (y[0] + h / 2 * k2[0], y[1] + h / 2 * k2[1]))
+            k4 = f(r + h, (y[0] + h * k3[0], y[1] + h * k3[1]))
+            y = tuple(y[i] + h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]) for i in range(2))
+            r += h
+        return M * y[1] + lam * y[0] / Ro
+
+    a, dk = 1e-6, 0.01 / (Ro - Ri)
+    while outer_stress(a) * outer_stress(a + dk) > 0:
+        a += dk
+    b = a + dk
+    for _ in range(60):
+        m = (a + b) / 2
+        a, b = (a, m) if outer_stress(a) * outer_stress(m) <= 0 else (m, b)
+    return (a + b) / 2 * math.sqrt(M / rho)
+
+
+def oscillation(u):
+    """The pole z and centre c of u_n = c + Re(w z^n) fitted by least squares to the recurrence
+    u_(n+1) = a u_n + b u_(n-1) + e (z, conj(z) the roots of z^2 = a z + b; c = e / (1 - a - b))."""
+    rows = [(u[n], u[n - 1], 1.0) for n in range(1, len(u) - 1)]
+    N = [[sum(x[i] * x[j] for x in rows) for j in range(3)] for i in range(3)]
+    v = [sum(x[i] * y for x, y in zip(rows, u[2:])) for i in range(3)]
+    det = lambda m: (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+                     + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
+    a, b, e = (det([[v[i] if j == c else N[i][j] for j in range(3)] for i in range(3)]) / det(N) for c in range(3))
+    return a / 2 + cmath.sqrt(a * a / 4 + b), e / (1 - a - b)
+
+
+@case
+def structure_oscillation():
+    """Lame's quarter cylinder (plane strain, E 1000, nu 0.3, rho 1, level 1) under a pressure 1
+    applied at t = 0 and held: the wall breathes about the static state. Each run's radial
+    displacement at mid-wall (r = 1.5) after the first half period is fitted by one damped
+    mode u_n = c + Re(w z^n): its centre c is the static solution (to 1e-4; Lame's u_r(1.5)
+    within 1.5 %, measured -0.66 %); the pole z satisfies the scheme's own characteristic
+    equation q(1/z)^2 = -(omega dt)^2 (q = 1 - y for backward Euler, (3 - 4y + y^2)/2 for BDF2:
+    the first difference applied twice) with omega the exact radial frequency of the cylinder
+    (23.234 rad/s, Bessel functions by shooting; measured |q|/dt 0.2 % above it, the P2 mesh's
+    stiffness) and q imaginary to 1e-3 (measured 1e-6): the motion is damped per step by the
+    scheme's amplification factor at that frequency and by nothing else, backward Euler keeping
+    14 % of the energy per period (|z| = 0.954 per step), BDF2 92 % (|z| = 0.998), the exact
+    motion all of it."""
+    E, nu, Ri, Ro, r = 1000, 0.3, 1.0, 2.0, 1.5
+    omega = radial_frequency(E, nu, 1.0, Ri, Ro)
+    dt = 2 * math.pi / omega / 20  # 20 steps per period
+    tmp = tempfile.mkdtemp()
+    base = ["-options_file", os.path.join(MESHES, "..", "scenes", "lame_cylinder.opts"), "-mesh", os.path.join(MESHES, "quarter_cylinder_L1.msh"),
+            "-structure_density", 1, "-ksp_type", "preonly", "-pc_type", "lu", "-structure_probes", f"{r / math.sqrt(2)},{r / math.sqrt(2)},0.25",
+            "-report", os.path.join(tmp, "r.json")]
+
+    def radial(*opts):
+        run([APP] + base + [str(o) for o in opts])
+        v = report(os.path.join(tmp, "r.json"))["probes"][0]["values"]
+        return [(v[k] + v[k + 1]) / math.sqrt(2) for k in range(0, len(v), 3)]
+
+    static = radial()[0]
+    print("exact radial frequency", omega, "static u_r(1.5)", static, "Lame", lame_radial(r, E, nu, 1, Ri, Ro))
+    between(static / lame_radial(r, E, nu, 1, Ri, Ro), 0.985, 1.015, "static u_r(1.5) / Lame's")
+    for scheme, q in (("backward_euler", lambda y: 1 - y), ("bdf2", lambda y: (3 - 4 * y + y * y) / 2)):
+        z, centre = oscillation(radial("-time_scheme", scheme, "-dt", dt, "-t_final", 3 * 20 * dt)[10:])
+        qz = q(1 / z)
+        print(scheme, "pole", z, "|z|", abs(z), "centre", centre, "q(1/z)", qz)
+        between(abs(centre / static - 1), 0, 1e-4, f"{scheme}: centre of the oscillation / static solution - 1")
+        between(abs(qz) / (omega * dt), 0.99, 1.01, f"{scheme}: |q(1/z)| / (omega dt), omega the exact radial frequency")
+        between(abs(qz.real) / abs(qz), 0, 1e-3, f"{scheme}: |Re q(1/z)| / |q(1/z)| (the scheme's own damping)")
+    shutil.rmtree(tmp)
 
 
 
@@ -268,6 +399,44 @@ def structure_restart():
     shutil.rmtree(tmp)
 
 
+def check_seconds(r, what, split):
+    """The run report's phases: present and positive, none longer than the time loop (total);
+    assembly never overlaps the preconditioner's set-up or the Krylov iterations, and those two
+    do not overlap when the set-up is all in the outer PCSetUp (split preconditioners set up
+    their inner solvers at first use, inside KSPSolve: then only each pair with assembly is
+    bounded). One rank: on several the phases are each rank's largest, not one rank's sum; 1 ms
+    for the report's 4 decimals."""
+    s, bound = r["seconds"], r["seconds"]["total"] + 1e-3
+    print(what, s, "peak memory", r["peak_memory_mib"], "MiB")
+    for phase in ("assembly", "preconditioner_setup", "krylov", "total"):
+        between(s[phase], 1e-6, s["total"], f"{what}: seconds in {phase}")
+    between(s["assembly"] + s["preconditioner_setup"], 0, bound, f"{what}: assembly + preconditioner set-up (s)")
+    between(s["assembly"] + s["krylov"], 0, bound, f"{what}: assembly + Krylov (s)")
+    if not split:
+        between(s["assembly"] + s["preconditioner_setup"] + s["krylov"], 0, bound, f"{what}: sum of the phases (s)")
+
+
+@case
+def run_report():
+    """The run report's seconds and memory (-report), one rank: the phases are present, positive
+    and bounded by the time loop's wall time (check_seconds) for the wall with gdsw (one PC: the
+    three phases sum to at most the total) and for the fluid with the Schur fieldsplit; the peak
+    resident memory exceeds the assembled operator's AIJ storage (12 bytes per nonzero: a value
+    and a 32-bit column index; the nonzeros from -ksp_view; measured 14 times as much)."""
+    tmp = tempfile.mkdtemp()
+    out = run([APP, "-mesh", os.path.join(MESHES, "tube1_L0.msh"), "-structure_pressure", 1330, "-E", 4e5, "-nu", 0.3] + WALL +
+              ["-pc_type", "gdsw", "-structure_subdomains", 4, "-ksp_view", "-report", os.path.join(tmp, "wall.json")])
+    wall = report(os.path.join(tmp, "wall.json"))
+    check_seconds(wall, "wall, gdsw", split=False)
+    n = sum(wall["unknowns"].values())
+    nonzeros = int(re.findall(rf"rows={n}, cols={n}\s+total: nonzeros=(\d+)", out)[-1])
+    between(wall["peak_memory_mib"] * 2**20 / (12 * nonzeros), 1, 1e4, f"peak memory / AIJ storage of the operator ({nonzeros} nonzeros)")
+    run([APP, "-options_file", os.path.join(MESHES, "..", "scenes", "fluid_tube1_pulse.opts"), "-mesh", os.path.join(MESHES, "tube1_L0.msh"),
+         "-t_final", 1e-3, "-report", os.path.join(tmp, "fluid.json")])
+    check_seconds(report(os.path.join(tmp, "fluid.json")), "fluid, Schur fieldsplit", split=True)
+    shutil.rmtree(tmp)
+
+
 def subprocess_out(cmd):
     import subprocess
     return subprocess.run([str(c) for c in cmd], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True).stdout
@@ -317,8 +486,12 @@ def structure_output():
 @case
 def structure_arterial():
     """The arterial wall (Balzani's polyconvex law with two fibre families) on tube #1 under
-    the seed's pressure: Newton converges in a few steps, the same on 1 and 2 ranks, and the
-    wall (c1 = 17.5 kPa) moves less than the softer Neo-Hooke wall (mu = 7.72 kPa)."""
+    the seed's pressure: Newton converges in a few steps, the same on 1 and 2 ranks. In the
+    small-strain limit the law is isotropic elasticity with shear modulus 2 c1 and bulk modulus
+    8 eps1 eps2^2 (the fibre terms <I1 J4 - J5 - 2>^alpha2 vanish to order alpha2 = 5.1 at
+    C = I): E = 1.05e6, nu = 0.4992; the ratio of the displacements falls to 1 linearly with
+    the load (r - 1 = 0.0020 at 1330 dyn/cm^2, 1.9-2.1 times that at half of it; extrapolated to
+    zero load 1 within 3e-4, measured 3e-5)."""
     mesh = os.path.join(MESHES, "tube1_L0.msh")
     load = ["-mesh", mesh, "-structure_pressure", 1330, "-material", "arterial"] + WALL
     load[load.index("ksponly")] = "newtonls"
@@ -326,7 +499,8 @@ def structure_arterial():
     r = [solve(*load, "-pc_type", "gdsw", "-structure_subdomains", 8 // np, np=np) for np in (1, 2)]
     print(r)
     assert r[0]["newton"] <= 4 and abs(r[0]["dmax"] - r[1]["dmax"]) <= 1e-6 * r[0]["dmax"], r
-    between(r[0]["dmax"] / 2.70e-3, 0.15, 0.5, "arterial / Neo-Hooke displacement")
+    c1, eps1, eps2 = 1.75e5, 4.998e6, 2.4  # the scene's default -arterial
+    between(small_strain_limit(["-material", "arterial"], 2 * c1, 8 * eps1 * eps2**2, 1330)[0] - 1, 0, 0.01, "arterial / linearised wall - 1 at the seed's load")
 
 
 
@@ -375,22 +549,48 @@ def fluid_poiseuille():
     between(flow(*POISEUILLE, np=2)["flux"] / r[0]["flux"], 1 - 1e-6, 1 + 1e-6, "2 ranks / 1 rank flux")
 
 
+def pipe_flux_step(dp, t, R=0.15, L=2.5, rho=1.0, mu=0.03):
+    """The flux at time t through a rigid pipe whose fluid, at rest until t = 0, is driven by the
+    pressure drop dp from then on (Szymanski's exact flow); its short-time expansion
+    Q = pi R^2 (dp / L) t / rho (1 - 8 sqrt(tau) / (3 sqrt(pi)) + tau / 2), tau = nu t / R^2, is
+    exact to 3e-5 relative for tau < 0.01 (checked against the Bessel series)."""
+    tau = mu / rho * t / R**2
+    return math.pi * R**2 * dp / L * t / rho * (1 - 8 * math.sqrt(tau) / (3 * math.sqrt(math.pi)) + tau / 2)
+
+
 @case
 def fluid_pulse():
     """The seed's inflow pulse (1330 dyn/cm^2 for t <= 3 ms) in the rigid tube #1, backward
-    Euler dt 0.5 ms, 2 ranks: Newton converges in every step within 3 iterations, FGMRES with
-    the fieldsplit preconditioner needs at most 20 iterations per Newton step; the XDMF output
-    has velocity and pressure in every frame."""
+    Euler dt 0.5 ms up to 4 ms, 2 ranks, against the exact flow of a rigid pipe (unidirectional:
+    the convection vanishes, the pressure is linear in z): on the axis p = p_in (1 - z/L) while the
+    load acts (inlet p_in, outlet 0) and p = 0 after it, to 0.5 % of p_in (measured 0.13 %); what
+    enters leaves (1e-6); the flux at 4 ms is 0.8-1.02 times the exact Q(4 ms) - Q(1 ms) of a
+    3 ms pulse (Szymanski's flow superposed; measured 0.876 on tube1_L0, whose cells of 0.1 cm do
+    not resolve the Stokes layer sqrt(nu t) = 0.01 cm: 0.95 on tube1_L1 at 2 ms). Newton
+    converges in every step within 3 iterations, FGMRES with the fieldsplit preconditioner needs
+    at most 20 iterations per Newton step; the XDMF output has velocity and pressure in every
+    frame."""
     tmp = tempfile.mkdtemp()
+    p_in, L, axis = 1330, 2.5, [0, 0.625, 1.25, 1.875, 2.5]
     out = run([APP, "-options_file", os.path.join(MESHES, "..", "scenes", "fluid_tube1_pulse.opts"), "-mesh", os.path.join(MESHES, "tube1_L0.msh"),
-               "-t_final", 2e-3, "-output", os.path.join(tmp, "flow.xdmf")], 2)
-    steps = [(int(a), int(b)) for a, b in re.findall(r"step \d+/4 t \S+ newton (\d+) krylov (\d+) CONVERGED", out)]
+               "-t_final", 4e-3, "-output", os.path.join(tmp, "flow.xdmf"), "-report", os.path.join(tmp, "r.json"),
+               "-fluid_probes", ",".join(f"0,0,{z}" for z in axis)], 2)
+    steps = [(int(a), int(b)) for a, b in re.findall(r"step \d+/8 t \S+ newton (\d+) krylov (\d+) CONVERGED", out)]
     print(steps)
-    assert len(steps) == 4 and all(n <= 3 and k <= 20 * n for n, k in steps), steps
-    # the output holds velocity (P2) and pressure (P1, linear on the edges) at the 1894 P2 nodes, 5 frames
+    assert len(steps) == 8 and all(n <= 3 and k <= 20 * n for n, k in steps), steps
+    r = report(os.path.join(tmp, "r.json"))
+    probes = r["probes"][0]
+    for k, t in enumerate(probes["t"]):
+        p = probes["values"][k * len(axis):(k + 1) * len(axis)]
+        exact = [p_in * (1 - z / L) if t <= 3e-3 + 1e-12 else 0.0 for z in axis]
+        between(max(abs(a - b) for a, b in zip(p, exact)) / p_in, 0, 5e-3, f"t {t}: max |p - p_in (1 - z/L)| on the axis / p_in")
+    q_in, q_out = -r["results"]["inlet_flux"], r["results"]["outlet_flux"]
+    between(abs(q_in - q_out) / q_out, 0, 1e-6, "|inflow - outflow| / outflow")
+    between(q_out / (pipe_flux_step(p_in, 4e-3) - pipe_flux_step(p_in, 1e-3)), 0.8, 1.02, "flux at 4 ms / the exact pipe flow's")
+    # the output holds velocity (P2) and pressure (P1, linear on the edges) at the 1894 P2 nodes, 9 frames
     listing = subprocess_out(["h5ls", "-r", os.path.join(tmp, "flow.h5")])
-    assert len(re.findall(r"/fields/velocity_\d+ +Dataset \{1894, 3\}", listing)) == 5, listing
-    assert len(re.findall(r"/fields/pressure_\d+ +Dataset \{1894\}", listing)) == 5, listing
+    assert len(re.findall(r"/fields/velocity_\d+ +Dataset \{1894, 3\}", listing)) == 9, listing
+    assert len(re.findall(r"/fields/pressure_\d+ +Dataset \{1894\}", listing)) == 9, listing
     shutil.rmtree(tmp)
 
 
@@ -590,17 +790,40 @@ def geometry_harmonic():
 
 @case
 def structure_loads():
-    """Loads: a dead traction -p n on a face equals the pressure p there (to round-off); the body
-    force scales linearly and its load increments reach the one-step state (linear law)."""
+    """Loads: a dead traction -p n on a face equals the pressure p there (to round-off). The body
+    force on the unit cube as a column under its own weight (E 1, nu 0.3): base z0 held
+    vertically, the sides on rollers (x0, x1: u_x = 0; y0, y1: u_y = 0), gravity b = (0, 0, -g):
+    uniaxial strain with the constrained modulus lambda + 2 mu, u_z(z) = -g (L z - z^2/2) /
+    (lambda + 2 mu), u_x = u_y = 0; quadratic, so P2 reproduces it to the solver's tolerance
+    (probes at three heights, 1e-8 of the top's displacement). The body force scales linearly
+    and its load increments reach the one-step state (linear law)."""
     cube = ["-mesh", os.path.join(MESHES, "cube_L0.msh"), "-structure_clamp", "x0", "-snes_type", "ksponly", "-ksp_type", "preonly", "-pc_type", "lu"]
     p = solve(*cube, "-structure_pressure", 0.01, "-structure_pressure_group", "x1")["dmax"]
     t = solve(*cube, "-structure_traction", "-0.01,0,0", "-structure_traction_group", "x1")["dmax"]
     between(t / p, 1 - 1e-10, 1 + 1e-10, "traction / pressure displacement")
-    g = [solve(*cube, "-structure_body_force", f"0,0,{-0.01 * k}", *extra)["dmax"] for k, extra in ((1, []), (2, []), (2, ["-structure_load_steps", 4]))]
-    between(g[1] / g[0], 2 - 1e-10, 2 + 1e-10, "doubled body force / body force displacement")
-    between(g[2] / g[1], 1 - 1e-10, 1 + 1e-10, "4 load steps / 1 step")
+    tmp = tempfile.mkdtemp()
+    E, nu, g, heights = 1.0, 0.3, 0.01, (0.25, 0.5, 1.0)
+    column = ["-mesh", os.path.join(MESHES, "cube_L0.msh"), "-structure_clamp", "z0:z,x0:x,x1:x,y0:y,y1:y", "-E", E, "-nu", nu,
+              "-snes_type", "ksponly", "-ksp_type", "preonly", "-pc_type", "lu", "-report", os.path.join(tmp, "r.json"),
+              "-structure_probes", ",".join(f"0.3,0.6,{z}" for z in heights)]
+
+    def weight(*opts):
+        run([APP] + [str(o) for o in column + list(opts)])
+        return report(os.path.join(tmp, "r.json"))
+
+    u = weight("-structure_body_force", f"0,0,{-g}")["probes"][0]["values"]
+    constrained = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu))  # lambda + 2 mu
+    exact = [(0, 0, -g * (z - z * z / 2) / constrained) for z in heights]
+    print("column under gravity: u at", heights, u, "exact", exact)
+    between(max(abs(u[3 * k + c] - exact[k][c]) for k in range(3) for c in range(3)) / abs(exact[-1][2]), 0, 1e-8,
+            "max |u - u_exact| at the probes / |u_z(top)|")
+    gm = [weight("-structure_body_force", f"0,0,{-g * k}", *extra)["results"]["max_displacement"] for k, extra in ((1, []), (2, []), (2, ["-structure_load_steps", 4]))]
+    between(gm[1] / gm[0], 2 - 1e-10, 2 + 1e-10, "doubled body force / body force displacement")
+    between(gm[2] / gm[1], 1 - 1e-10, 1 + 1e-10, "4 load steps / 1 step")
+    shutil.rmtree(tmp)
     out = run([APP] + cube + ["-structure_traction", "1,0,0"], 1, fail=True)
     assert "-structure_traction: name the faces it acts on with -structure_traction_group" in out
+
 
 @case
 def structure_bad_options():

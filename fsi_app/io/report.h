@@ -14,7 +14,8 @@ namespace fsi {
 struct Phases {
   double assembly = 0; /* residual and Jacobian (SNESFunctionEval + SNESJacobianEval) */
   double setup    = 0; /* preconditioner set-up (PCSetUp) */
-  double krylov   = 0; /* Krylov iterations (KSPSolve; PCSetUp is not inside it) */
+  double krylov   = 0; /* Krylov iterations (KSPSolve; the outer PCSetUp is not inside it, but inner solvers
+                          set up at first use, as PCFIELDSPLIT's, are: their set-up counts in both) */
   std::vector<std::pair<std::string, double>> splitSetUp; /* of each named split (in setup) */
   double total    = 0; /* the time loop, wall clock */
   double peakMiB  = 0; /* largest resident set, summed over ranks */
