@@ -4,6 +4,7 @@
 #include "io/files.h"
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 
 namespace fsi {
@@ -148,14 +149,19 @@ static PetscErrorCode CheckTimeSteps(const Scene &sc)
 }
 
 /* The files the run will write can be written, before it computes anything; a restart's
-   output series continues the file it finds. */
+   output series continues the one it finds. */
 static PetscErrorCode CheckOutputFiles(const Scene &sc)
 {
   PetscFunctionBegin;
   if (sc.output[0]) {
-    const std::string xdmf = sc.output, h5 = xdmf.substr(0, xdmf.size() - (xdmf.size() > 5 ? 5 : 0)) + ".h5";
+    const std::string xdmf = sc.output, base = xdmf.substr(0, xdmf.size() - 5), h5 = base + ".h5";
+    PetscCheck(xdmf.size() > 5 && xdmf.substr(xdmf.size() - 5) == ".xdmf", PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-output %s: name the file <name>.xdmf (the data go to <name>.h5)", sc.output);
     PetscCall(CheckWritable(PETSC_COMM_WORLD, "-output", xdmf));
     PetscCall(CheckWritable(PETSC_COMM_WORLD, "-output", h5));
+    if (sc.restart[0])
+      PetscCall(CheckOnRankZero(PETSC_COMM_WORLD, PETSC_ERR_FILE_OPEN, [&]() {
+        return std::ifstream(h5) ? std::string() : "-output " + xdmf + " with -restart: the series continues in " + h5 + ", which is not there; give the -output of the run that wrote the checkpoint";
+      }));
   }
   if (sc.checkpoint[0]) PetscCall(CheckWritable(PETSC_COMM_WORLD, "-checkpoint", sc.checkpoint));
   if (sc.report[0]) PetscCall(CheckWritable(PETSC_COMM_WORLD, "-report", sc.report));
