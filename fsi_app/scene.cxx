@@ -71,7 +71,10 @@ struct OptionReader {
   {
     std::string s;
     char        x[32];
-    for (PetscInt i = 0; i < n; i++) PetscSNPrintf(x, sizeof(x), "%s%.17g", i ? "," : "", (double)v[i]), s += x;
+    for (PetscInt i = 0; i < n; i++) {
+      std::snprintf(x, sizeof(x), "%.15g", (double)v[i]); /* as given, for a person to compare */
+      s += (i ? "," : "") + std::string(x);
+    }
     Record(name, role, s);
   }
   PetscErrorCode Real(const char *name, const char *text, PetscReal *v, const Range &r, OptionRole role) const
