@@ -208,7 +208,7 @@ int main(int argc, char **argv)
   if (initial && dynamic) PetscCall(TimeHistorySetState(history, x));
   if (sc.restart[0]) {
     CheckpointHeader c;
-    PetscCall(CheckpointRead(sc.restart, dm, c, x, history));
+    PetscCall(CheckpointRead(sc.restart, dm, sc.problem, c, x, history));
     first = report.restartedAt = c.step;
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "restart from %s: step %" PetscInt_FMT " t %.4e\n", sc.restart, c.step, (double)c.t));
   }
@@ -238,7 +238,7 @@ int main(int argc, char **argv)
     PetscFunctionBegin;
     for (Block *blk : b.list) PetscCall(blk->AfterStep(dm, k, t, y));
     if (sc.output[0] && k % sc.outputEvery == 0) PetscCall(XdmfWriteFrame(series, t, y));
-    if (sc.checkpoint[0] && (k % sc.checkpointEvery == 0 || k == loop.steps)) PetscCall(CheckpointWrite(sc.checkpoint, dm, {k, t}, y, history));
+    if (sc.checkpoint[0] && (k % sc.checkpointEvery == 0 || k == loop.steps)) PetscCall(CheckpointWrite(sc.checkpoint, dm, {k, t}, sc.problem, y, history));
     PetscFunctionReturn(0);
   };
   PetscLogDouble t0, t1;

@@ -1,7 +1,11 @@
 #include "scene.h"
 #include "discretization/fields.h"
 #include "solver/block.h"
+#include "io/files.h"
 #include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <limits>
 
 namespace fsi {
 
@@ -14,6 +18,159 @@ PetscReal SmoothRamp(PetscReal t, PetscReal T, PetscReal *rate)
   return rising ? PetscSqr(PetscSinReal(PETSC_PI * t / (2 * T))) : 1.0;
 }
 
+/* v as C's %g writes it (PETSc's %g writes 1 and nan as "1." and "nan."). */
+static std::string Number(PetscReal v)
+{
+  char s[32];
+  std::snprintf(s, sizeof(s), "%g", (double)v);
+  return s;
+}
+
+/* The interval a number read from an option must lie in, each end open or closed: the
+   physics' bounds (a density is positive, a ramp's length >= 0); any real number if unbounded. */
+struct Range {
+  PetscReal lo = -std::numeric_limits<PetscReal>::infinity(), hi = std::numeric_limits<PetscReal>::infinity();
+  PetscBool openLo = PETSC_FALSE, openHi = PETSC_FALSE;
+
+  PetscBool Contains(PetscReal v) const { return (PetscBool)((openLo ? v > lo : v >= lo) && (openHi ? v < hi : v <= hi)); }
+  std::string Text() const
+  {
+    if (lo == 0 && openLo && PetscIsInfReal(hi)) return "positive";
+    if (PetscIsInfReal(hi)) return std::string(openLo ? "> " : ">= ") + Number(lo);
+    return std::string("in ") + (openLo ? "(" : "[") + Number(lo) + ", " + Number(hi) + (openHi ? ")" : "]");
+  }
+};
+static const Range Any{}, Positive = {0, std::numeric_limits<PetscReal>::infinity(), PETSC_TRUE}, NonNegative = {0};
+static Range AtLeast(PetscReal lo) { return {lo}; }
+
+enum OptionRole { RUN, PROBLEM }; /* PROBLEM: defines the equations, their unknowns, conditions and loads */
+
+/* Where the scene's options are read: every number is checked where it is read (finite, in its
+   range), and the options that define the problem are recorded with their values, which a
+   checkpoint keeps and a restart compares. */
+struct OptionReader {
+  PetscOptionItems *PetscOptionsObject; /* the name PETSc's PetscOptions*() macros use */
+  Scene            &sc;
+
+  PetscErrorCode Check(const char *name, const PetscReal *v, PetscInt n, const Range &r) const
+  {
+    PetscFunctionBegin;
+    for (PetscInt i = 0; i < n; i++) {
+      char which[32] = "value";
+      if (n > 1) PetscCall(PetscSNPrintf(which, sizeof(which), "value %" PetscInt_FMT, i + 1));
+      PetscCheck(!PetscIsInfOrNanReal(v[i]), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "%s: %s must be a finite number (got %s)", name, which, Number(v[i]).c_str());
+      PetscCheck(r.Contains(v[i]), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "%s: %s must be %s (got %s)", name, which, r.Text().c_str(), Number(v[i]).c_str());
+    }
+    PetscFunctionReturn(0);
+  }
+  void Record(const char *name, OptionRole role, const std::string &value) const
+  {
+    if (role == PROBLEM) sc.problem[name] = value;
+  }
+  void Record(const char *name, OptionRole role, const PetscReal *v, PetscInt n) const
+  {
+    std::string s;
+    char        x[32];
+    for (PetscInt i = 0; i < n; i++) {
+      std::snprintf(x, sizeof(x), "%.15g", (double)v[i]); /* as given, for a person to compare */
+      s += (i ? "," : "") + std::string(x);
+    }
+    Record(name, role, s);
+  }
+  PetscErrorCode Real(const char *name, const char *text, PetscReal *v, const Range &r, OptionRole role) const
+  {
+    PetscBool given;
+
+    PetscFunctionBegin;
+    PetscCall(PetscOptionsReal(name, text, nullptr, *v, v, &given));
+    if (given) PetscCall(Check(name, v, 1, r));
+    Record(name, role, v, 1);
+    PetscFunctionReturn(0);
+  }
+  /* up to *n values; *n is how many were given */
+  PetscErrorCode Reals(const char *name, const char *text, PetscReal *v, PetscInt *n, PetscBool *set, const Range &r, OptionRole role) const
+  {
+    const PetscInt max = *n;
+    PetscBool      given;
+
+    PetscFunctionBegin;
+    PetscCall(PetscOptionsRealArray(name, text, nullptr, v, n, &given));
+    if (given) PetscCall(Check(name, v, *n, r));
+    Record(name, role, v, given ? *n : max);
+    if (set) *set = given;
+    PetscFunctionReturn(0);
+  }
+  PetscErrorCode Int(const char *name, const char *text, PetscInt *v, const Range &r, OptionRole role) const
+  {
+    PetscReal x;
+    PetscBool given;
+
+    PetscFunctionBegin;
+    PetscCall(PetscOptionsInt(name, text, nullptr, *v, v, &given));
+    x = (PetscReal)*v;
+    if (given) PetscCall(Check(name, &x, 1, r));
+    Record(name, role, std::to_string(*v));
+    PetscFunctionReturn(0);
+  }
+  PetscErrorCode String(const char *name, const char *text, char *v, size_t len, OptionRole role) const
+  {
+    PetscFunctionBegin;
+    PetscCall(PetscOptionsString(name, text, nullptr, v, v, len, nullptr));
+    Record(name, role, v);
+    PetscFunctionReturn(0);
+  }
+  PetscErrorCode Bool(const char *name, const char *text, PetscBool *v, OptionRole role) const
+  {
+    PetscFunctionBegin;
+    PetscCall(PetscOptionsBool(name, text, nullptr, *v, v, nullptr));
+    Record(name, role, *v ? "true" : "false");
+    PetscFunctionReturn(0);
+  }
+  template <class E>
+  PetscErrorCode Enum(const char *name, const char *text, const char *const *list, E *v, OptionRole role) const
+  {
+    PetscFunctionBegin;
+    PetscCall(PetscOptionsEnum(name, text, nullptr, list, (PetscEnum)*v, (PetscEnum *)v, nullptr));
+    Record(name, role, list[*v]);
+    PetscFunctionReturn(0);
+  }
+};
+
+/* dt and t_final give a whole number of steps, at least one, that a PetscInt counts. */
+static PetscErrorCode CheckTimeSteps(const Scene &sc)
+{
+  const PetscReal   steps = sc.tFinal / sc.dt, whole = PetscFloorReal(steps + 0.5);
+  const std::string both  = "-dt " + Number(sc.dt) + " -t_final " + Number(sc.tFinal);
+
+  PetscFunctionBegin;
+  if (!sc.Dynamic()) PetscFunctionReturn(0);
+  PetscCheck(steps > 1 - 1e-6, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "%s: the end time must be at least one step", both.c_str());
+  PetscCheck(whole <= PETSC_MAX_INT, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "%s: %s steps, more than a run can count (%d)", both.c_str(), Number(steps).c_str(), PETSC_MAX_INT);
+  PetscCheck(PetscAbsReal(steps - whole) <= 1e-6, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "%s: the end time must be a whole number of steps (it is %s steps): take -t_final %s or %s, or a -dt that divides it", both.c_str(), Number(steps).c_str(),
+             Number(PetscFloorReal(steps) * sc.dt).c_str(), Number(PetscCeilReal(steps) * sc.dt).c_str());
+  PetscFunctionReturn(0);
+}
+
+/* The files the run will write can be written, before it computes anything; a restart's
+   output series continues the one it finds. */
+static PetscErrorCode CheckOutputFiles(const Scene &sc)
+{
+  PetscFunctionBegin;
+  if (sc.output[0]) {
+    const std::string xdmf = sc.output, base = xdmf.substr(0, xdmf.size() - 5), h5 = base + ".h5";
+    PetscCheck(xdmf.size() > 5 && xdmf.substr(xdmf.size() - 5) == ".xdmf", PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-output %s: name the file <name>.xdmf (the data go to <name>.h5)", sc.output);
+    PetscCall(CheckWritable(PETSC_COMM_WORLD, "-output", xdmf));
+    PetscCall(CheckWritable(PETSC_COMM_WORLD, "-output", h5));
+    if (sc.restart[0])
+      PetscCall(CheckOnRankZero(PETSC_COMM_WORLD, PETSC_ERR_FILE_OPEN, [&]() {
+        return std::ifstream(h5) ? std::string() : "-output " + xdmf + " with -restart: the series continues in " + h5 + ", which is not there; give the -output of the run that wrote the checkpoint";
+      }));
+  }
+  if (sc.checkpoint[0]) PetscCall(CheckWritable(PETSC_COMM_WORLD, "-checkpoint", sc.checkpoint));
+  if (sc.report[0]) PetscCall(CheckWritable(PETSC_COMM_WORLD, "-report", sc.report));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ReadScene(Scene &sc)
 {
   PetscInt  n;
@@ -22,91 +179,88 @@ PetscErrorCode ReadScene(Scene &sc)
 
   PetscFunctionBegin;
   PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "fsi_app scene", nullptr);
-  PetscCall(PetscOptionsEnum("-physics", "what to solve: the wall, the fluid (with the geometry if -fluid_moving_mesh), the harmonic extension alone, or the coupled problem (fsi: structure, fluid, geometry, coupling)", nullptr, PhysicsNames, (PetscEnum)sc.physics, (PetscEnum *)&sc.physics, nullptr));
-  PetscCall(PetscOptionsString("-blocks", "the blocks of the scene, comma separated, from structure, fluid, geometry, coupling (empty: those of -physics)", nullptr, blocks, blocks, sizeof(blocks), nullptr));
-  PetscCall(PetscOptionsString("-mesh", "gmsh mesh file", nullptr, sc.mesh, sc.mesh, sizeof(sc.mesh), nullptr));
-  PetscCall(PetscOptionsInt("-refine", "uniform refinements of the mesh after distribution", nullptr, sc.refine, &sc.refine, nullptr));
-  PetscCall(PetscOptionsString("-structure_region", "physical group of the wall's cells (empty: every cell)", nullptr, sc.region, sc.region, sizeof(sc.region), nullptr));
-  PetscCall(PetscOptionsString("-structure_clamp", "groups of faces where the displacement is zero, comma separated; group:xz fixes only those components", nullptr, sc.clamp, sc.clamp, sizeof(sc.clamp), nullptr));
-  PetscCall(PetscOptionsReal("-structure_pressure", "pressure on the faces of -structure_pressure_group (dyn/cm^2)", nullptr, sc.pressure, &sc.pressure, nullptr));
-  PetscCall(PetscOptionsString("-structure_pressure_group", "group of faces the pressure acts on", nullptr, sc.loaded, sc.loaded, sizeof(sc.loaded), nullptr));
-  PetscCall(PetscOptionsBool("-structure_pressure_follower", "the pressure acts on the deformed face (follower load) rather than the reference one", nullptr, sc.follower, &sc.follower, nullptr));
+  const OptionReader opt{PetscOptionsObject, sc};
+  PetscCall(opt.Enum("-physics", "what to solve: the wall, the fluid (with the geometry if -fluid_moving_mesh), the harmonic extension alone, or the coupled problem (fsi: structure, fluid, geometry, coupling)", PhysicsNames, &sc.physics, PROBLEM));
+  PetscCall(opt.String("-blocks", "the blocks of the scene, comma separated, from structure, fluid, geometry, coupling (empty: those of -physics)", blocks, sizeof(blocks), PROBLEM));
+  PetscCall(opt.String("-mesh", "gmsh mesh file", sc.mesh, sizeof(sc.mesh), PROBLEM));
+  PetscCall(opt.Int("-refine", "uniform refinements of the mesh after distribution", &sc.refine, NonNegative, PROBLEM));
+  PetscCall(opt.String("-structure_region", "physical group of the wall's cells (empty: every cell)", sc.region, sizeof(sc.region), PROBLEM));
+  PetscCall(opt.String("-structure_clamp", "groups of faces where the displacement is zero, comma separated; group:xz fixes only those components", sc.clamp, sizeof(sc.clamp), PROBLEM));
+  PetscCall(opt.Real("-structure_pressure", "pressure on the faces of -structure_pressure_group (dyn/cm^2)", &sc.pressure, Any, PROBLEM));
+  PetscCall(opt.String("-structure_pressure_group", "group of faces the pressure acts on", sc.loaded, sizeof(sc.loaded), PROBLEM));
+  PetscCall(opt.Bool("-structure_pressure_follower", "the pressure acts on the deformed face (follower load) rather than the reference one", &sc.follower, PROBLEM));
   n = 3;
-  PetscCall(PetscOptionsRealArray("-structure_body_force", "body force bx,by,bz per unit reference volume (dyn/cm^3)", nullptr, sc.bodyForce, &n, &set));
+  PetscCall(opt.Reals("-structure_body_force", "body force bx,by,bz per unit reference volume (dyn/cm^3)", sc.bodyForce, &n, &set, Any, PROBLEM));
   PetscCheck(!set || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_body_force: give bx,by,bz (got %" PetscInt_FMT " values)", n);
   n = 3;
-  PetscCall(PetscOptionsRealArray("-structure_traction", "dead traction tx,ty,tz per unit reference area on -structure_traction_group (dyn/cm^2)", nullptr, sc.traction, &n, &set));
+  PetscCall(opt.Reals("-structure_traction", "dead traction tx,ty,tz per unit reference area on -structure_traction_group (dyn/cm^2)", sc.traction, &n, &set, Any, PROBLEM));
   PetscCheck(!set || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_traction: give tx,ty,tz (got %" PetscInt_FMT " values)", n);
-  PetscCall(PetscOptionsString("-structure_traction_group", "group of faces the traction acts on", nullptr, sc.tractionGroup, sc.tractionGroup, sizeof(sc.tractionGroup), nullptr));
+  PetscCall(opt.String("-structure_traction_group", "group of faces the traction acts on", sc.tractionGroup, sizeof(sc.tractionGroup), PROBLEM));
   PetscCheck(!(sc.traction[0] != 0 || sc.traction[1] != 0 || sc.traction[2] != 0) || sc.tractionGroup[0], PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_traction: name the faces it acts on with -structure_traction_group");
-  PetscCall(PetscOptionsReal("-structure_pressure_ramp", "the pressure rises smoothly (sin^2) from 0 over this time (s); 0: a step at t = 0", nullptr, sc.ramp, &sc.ramp, nullptr));
-  PetscCall(PetscOptionsReal("-structure_pressure_until", "the pressure acts while t <= this (s); 0: always", nullptr, sc.pulseEnd, &sc.pulseEnd, nullptr));
-  PetscCall(PetscOptionsEnum("-material", "constitutive law of the wall", nullptr, MaterialNames, (PetscEnum)sc.material, (PetscEnum *)&sc.material, nullptr));
-  PetscCall(PetscOptionsReal("-E", "Young's modulus (linear elastic)", nullptr, sc.E, &sc.E, nullptr));
-  PetscCall(PetscOptionsReal("-nu", "Poisson ratio (linear elastic)", nullptr, sc.nu, &sc.nu, nullptr));
-  PetscCall(PetscOptionsReal("-nh_mu", "Neo-Hooke shear modulus (dyn/cm^2)", nullptr, sc.mu, &sc.mu, nullptr));
-  PetscCall(PetscOptionsReal("-nh_kappa", "Neo-Hooke bulk modulus (dyn/cm^2)", nullptr, sc.kappa, &sc.kappa, nullptr));
+  PetscCall(opt.Real("-structure_pressure_ramp", "the pressure rises smoothly (sin^2) from 0 over this time (s); 0: a step at t = 0", &sc.ramp, NonNegative, PROBLEM));
+  PetscCall(opt.Real("-structure_pressure_until", "the pressure acts while t <= this (s); 0: always", &sc.pulseEnd, NonNegative, PROBLEM));
+  PetscCall(opt.Enum("-material", "constitutive law of the wall", MaterialNames, &sc.material, PROBLEM));
+  PetscCall(opt.Real("-E", "Young's modulus (linear elastic)", &sc.E, Positive, PROBLEM));
+  PetscCall(opt.Real("-nu", "Poisson ratio (linear elastic)", &sc.nu, Range{-1, 0.5, PETSC_TRUE, PETSC_TRUE}, PROBLEM));
+  PetscCall(opt.Real("-nh_mu", "Neo-Hooke shear modulus (dyn/cm^2)", &sc.mu, Positive, PROBLEM));
+  PetscCall(opt.Real("-nh_kappa", "Neo-Hooke bulk modulus (dyn/cm^2)", &sc.kappa, Positive, PROBLEM));
   n = 5;
-  PetscCall(PetscOptionsRealArray("-arterial", "arterial wall c1,eps1,eps2,alpha1,alpha2 (dyn/cm^2 for c1, eps1, alpha1)", nullptr, sc.arterial, &n, &set));
+  PetscCall(opt.Reals("-arterial", "arterial wall c1,eps1,eps2,alpha1,alpha2 (dyn/cm^2 for c1, eps1, alpha1)", sc.arterial, &n, &set, Any, PROBLEM));
   PetscCheck(!set || n == 5, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-arterial: give all five of c1,eps1,eps2,alpha1,alpha2 (got %" PetscInt_FMT ")", n);
-  PetscCall(PetscOptionsReal("-arterial_fibre_angle", "angle of the two fibre families from the circumferential direction (degrees)", nullptr, sc.fibreAngle, &sc.fibreAngle, nullptr));
-  PetscCall(PetscOptionsReal("-structure_density", "density of the wall (g/cm^3)", nullptr, sc.rho, &sc.rho, nullptr));
-  PetscCall(PetscOptionsInt("-structure_degree", "polynomial degree of the displacement", nullptr, sc.degree, &sc.degree, nullptr));
-  PetscCall(PetscOptionsInt("-structure_subdomains", "GDSW subdomains per rank (METIS on the rank's cells)", nullptr, sc.subdomains, &sc.subdomains, nullptr));
+  PetscCheck(sc.arterial[0] > 0 && sc.arterial[1] > 0 && sc.arterial[2] > 1 && sc.arterial[3] >= 0 && sc.arterial[4] >= 2, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
+             "-arterial %g,%g,%g,%g,%g: need c1 > 0, eps1 > 0, eps2 > 1, alpha1 >= 0, alpha2 >= 2 (polyconvexity and a C2 energy)", (double)sc.arterial[0], (double)sc.arterial[1], (double)sc.arterial[2], (double)sc.arterial[3], (double)sc.arterial[4]);
+  PetscCall(opt.Real("-arterial_fibre_angle", "angle of the two fibre families from the circumferential direction (degrees)", &sc.fibreAngle, Range{0, 90}, PROBLEM));
+  PetscCall(opt.Real("-structure_density", "density of the wall (g/cm^3)", &sc.rho, Positive, PROBLEM));
+  PetscCall(opt.Int("-structure_degree", "polynomial degree of the displacement", &sc.degree, Range{1, 3}, PROBLEM));
+  PetscCall(opt.Int("-structure_subdomains", "GDSW subdomains per rank (METIS on the rank's cells)", &sc.subdomains, AtLeast(1), RUN));
   PetscCall(PetscOptionsEList("-structure_pc_setup", "when the structure split's preconditioner is rebuilt (default: once for a linear wall, every time step otherwise)", nullptr, SplitSetUpNames, 3, sc.pcSetUp < 0 ? "auto" : SplitSetUpNames[sc.pcSetUp], &sc.pcSetUp, nullptr));
-  PetscCall(PetscOptionsString("-fluid_region", "physical group of the fluid's cells", nullptr, sc.fluidRegion, sc.fluidRegion, sizeof(sc.fluidRegion), nullptr));
-  PetscCall(PetscOptionsString("-fluid_noslip", "groups of faces where the velocity is zero, comma separated", nullptr, sc.noslip, sc.noslip, sizeof(sc.noslip), nullptr));
-  PetscCall(PetscOptionsReal("-fluid_density", "density of the fluid (g/cm^3)", nullptr, sc.rhoFluid, &sc.rhoFluid, nullptr));
-  PetscCall(PetscOptionsReal("-fluid_viscosity", "dynamic viscosity of the fluid (poise)", nullptr, sc.muFluid, &sc.muFluid, nullptr));
-  PetscCall(PetscOptionsReal("-fluid_inlet_pressure", "normal stress: traction -p n on the faces of -fluid_inlet (dyn/cm^2); the pulse ends at -structure_pressure_until", nullptr, sc.inletPressure, &sc.inletPressure, nullptr));
+  PetscCall(opt.String("-fluid_region", "physical group of the fluid's cells", sc.fluidRegion, sizeof(sc.fluidRegion), PROBLEM));
+  PetscCall(opt.String("-fluid_noslip", "groups of faces where the velocity is zero, comma separated", sc.noslip, sizeof(sc.noslip), PROBLEM));
+  PetscCall(opt.Real("-fluid_density", "density of the fluid (g/cm^3)", &sc.rhoFluid, Positive, PROBLEM));
+  PetscCall(opt.Real("-fluid_viscosity", "dynamic viscosity of the fluid (poise)", &sc.muFluid, Positive, PROBLEM));
+  PetscCall(opt.Real("-fluid_inlet_pressure", "normal stress: traction -p n on the faces of -fluid_inlet (dyn/cm^2); the pulse ends at -structure_pressure_until", &sc.inletPressure, Any, PROBLEM));
   n = 3;
-  PetscCall(PetscOptionsRealArray("-fluid_inflow_velocity", "prescribed velocity ux,uy,uz on the faces of -fluid_inlet (cm/s; no-slip groups keep u = 0 on their nodes)", nullptr, sc.inflowVelocity, &n, &sc.inflow));
+  PetscCall(opt.Reals("-fluid_inflow_velocity", "prescribed velocity ux,uy,uz on the faces of -fluid_inlet (cm/s; no-slip groups keep u = 0 on their nodes)", sc.inflowVelocity, &n, &sc.inflow, Any, PROBLEM));
   PetscCheck(!sc.inflow || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_inflow_velocity: give ux,uy,uz (got %" PetscInt_FMT " values)", n);
   for (auto probe : {std::make_pair("-structure_probes", &sc.structureProbes), std::make_pair("-fluid_probes", &sc.fluidProbes)}) {
-    PetscReal xyz[60];
+    PetscReal xyz[60] = {0};
     n = 60;
-    PetscCall(PetscOptionsRealArray(probe.first, probe.second == &sc.fluidProbes ? "points x1,y1,z1,x2,... (at most 20, reference configuration) where the pressure is recorded every step (in the run report); with -fluid_inlet_pressure, when the pulse's front (half its pressure) passes each and the wave speed" : "points x1,y1,z1,x2,... (at most 20, reference configuration) where the wall's displacement is recorded every step (in the run report)", nullptr, xyz, &n, &set));
+    PetscCall(opt.Reals(probe.first, probe.second == &sc.fluidProbes ? "points x1,y1,z1,x2,... (at most 20, reference configuration) where the pressure is recorded every step (in the run report); with -fluid_inlet_pressure, when the pulse's front (half its pressure) passes each and the wave speed" : "points x1,y1,z1,x2,... (at most 20, reference configuration) where the wall's displacement is recorded every step (in the run report)", xyz, &n, &set, Any, RUN));
     PetscCheck(!set || (n > 0 && n % 3 == 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s: give x,y,z for each point (got %" PetscInt_FMT " values)", probe.first, n);
     if (set) probe.second->assign(xyz, xyz + n);
   }
-  PetscCall(PetscOptionsString("-fluid_inlet", "group of the inflow faces", nullptr, sc.inlet, sc.inlet, sizeof(sc.inlet), nullptr));
-  PetscCall(PetscOptionsString("-fluid_outlet", "group of the outflow faces (stress-free)", nullptr, sc.outlet, sc.outlet, sizeof(sc.outlet), nullptr));
-  PetscCall(PetscOptionsString("-geometry_interface", "group where the fluid's mesh displacement is the structure's", nullptr, sc.interface, sc.interface, sizeof(sc.interface), nullptr));
-  PetscCall(PetscOptionsString("-geometry_slip", "groups where the mesh slides: the listed components are zero (planar ends: group:z)", nullptr, sc.slip, sc.slip, sizeof(sc.slip), nullptr));
-  PetscCall(PetscOptionsReal("-geometry_amplitude", "amplitude a of the prescribed interface displacement a s(t) (x^2 - y^2, -2xy, 0) (-physics geometry, -fluid_moving_mesh)", nullptr, sc.geometryAmplitude, &sc.geometryAmplitude, nullptr));
-  PetscCall(PetscOptionsReal("-geometry_ramp", "the prescribed interface displacement rises as s(t) = sin^2(pi t / 2T) over this time T (s); 0: at once", nullptr, sc.geometryRamp, &sc.geometryRamp, nullptr));
-  PetscCall(PetscOptionsBool("-fluid_shape_derivatives", "on a moving mesh, the fluid's Jacobian holds its derivative in the mesh displacement (exact Newton); false: quasi-Newton", nullptr, sc.shapeDerivatives, &sc.shapeDerivatives, nullptr));
-  PetscCall(PetscOptionsBool("-fluid_moving_mesh", "-physics fluid: the mesh moves (ALE) with the harmonic extension of the prescribed interface displacement", nullptr, sc.movingMesh, &sc.movingMesh, nullptr));
+  PetscCall(opt.String("-fluid_inlet", "group of the inflow faces", sc.inlet, sizeof(sc.inlet), PROBLEM));
+  PetscCall(opt.String("-fluid_outlet", "group of the outflow faces (stress-free)", sc.outlet, sizeof(sc.outlet), PROBLEM));
+  PetscCall(opt.String("-geometry_interface", "group where the fluid's mesh displacement is the structure's", sc.interface, sizeof(sc.interface), PROBLEM));
+  PetscCall(opt.String("-geometry_slip", "groups where the mesh slides: the listed components are zero (planar ends: group:z)", sc.slip, sizeof(sc.slip), PROBLEM));
+  PetscCall(opt.Real("-geometry_amplitude", "amplitude a of the prescribed interface displacement a s(t) (x^2 - y^2, -2xy, 0) (-physics geometry, -fluid_moving_mesh)", &sc.geometryAmplitude, Any, PROBLEM));
+  PetscCall(opt.Real("-geometry_ramp", "the prescribed interface displacement rises as s(t) = sin^2(pi t / 2T) over this time T (s); 0: at once", &sc.geometryRamp, NonNegative, PROBLEM));
+  PetscCall(opt.Bool("-fluid_shape_derivatives", "on a moving mesh, the fluid's Jacobian holds its derivative in the mesh displacement (exact Newton); false: quasi-Newton", &sc.shapeDerivatives, RUN));
+  PetscCall(opt.Bool("-fluid_moving_mesh", "-physics fluid: the mesh moves (ALE) with the harmonic extension of the prescribed interface displacement", &sc.movingMesh, PROBLEM));
   n = 3;
-  PetscCall(PetscOptionsRealArray("-poiseuille", "verification: Hagen-Poiseuille flow in a tube of radius R and length L along z driven by a pressure drop: R,L,dp", nullptr, sc.poiseuille, &n, &set));
+  PetscCall(opt.Reals("-poiseuille", "verification: Hagen-Poiseuille flow in a tube of radius R and length L along z driven by a pressure drop: R,L,dp", sc.poiseuille, &n, &set, Any, PROBLEM));
   PetscCheck(!set || (n == 3 && sc.poiseuille[0] > 0 && sc.poiseuille[1] > 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-poiseuille: give R,L,dp with R > 0 and L > 0");
-  PetscCall(PetscOptionsReal("-dt", "time step (s); 0 solves the static problem", nullptr, sc.dt, &sc.dt, nullptr));
-  PetscCall(PetscOptionsReal("-t_final", "end time (s)", nullptr, sc.tFinal, &sc.tFinal, nullptr));
-  PetscCall(PetscOptionsEnum("-time_scheme", "differences in time for the inertia", nullptr, TimeSchemeNames, (PetscEnum)sc.scheme, (PetscEnum *)&sc.scheme, nullptr));
-  PetscCall(PetscOptionsInt("-structure_load_steps", "apply the load in this many equal increments (statics)", nullptr, sc.loadSteps, &sc.loadSteps, nullptr));
-  PetscCall(PetscOptionsInt("-max_step_cuts", "a failed step (Newton diverged, element inverted) is halved up to this many times before the run stops", nullptr, sc.maxCuts, &sc.maxCuts, nullptr));
-  PetscCall(PetscOptionsBool("-mms", "manufactured solution d = a sin(pi x)sin(pi y)sin(pi z)(1,1,1) on the unit cube", nullptr, sc.mms, &sc.mms, nullptr));
-  PetscCall(PetscOptionsReal("-mms_amplitude", "the amplitude a of the manufactured solution", nullptr, sc.mmsAmplitude, &sc.mmsAmplitude, nullptr));
-  PetscCall(PetscOptionsEnum("-mms_flow", "-physics fluid -mms: the manufactured flow (exact velocity on the boundary but -fluid_outlet, exact traction there)", nullptr, FlowMMSKindNames, (PetscEnum)sc.mmsFlow, (PetscEnum *)&sc.mmsFlow, nullptr));
-  PetscCall(PetscOptionsReal("-mms_ramp", "the trigonometric manufactured flow rises as sin^2(pi t / 2T) over this time T (s); 0: steady", nullptr, sc.mmsRamp, &sc.mmsRamp, nullptr));
+  PetscCall(opt.Real("-dt", "time step (s); 0 solves the static problem", &sc.dt, NonNegative, RUN)); /* the checkpoint's header compares it */
+  PetscCall(opt.Real("-t_final", "end time (s), a whole number of steps", &sc.tFinal, NonNegative, RUN));
+  PetscCall(opt.Enum("-time_scheme", "differences in time for the inertia", TimeSchemeNames, &sc.scheme, RUN));
+  PetscCall(opt.Int("-structure_load_steps", "apply the load in this many equal increments (statics)", &sc.loadSteps, AtLeast(1), RUN));
+  PetscCall(opt.Int("-max_step_cuts", "a failed step (Newton diverged, element inverted) is halved up to this many times before the run stops", &sc.maxCuts, Range{0, 20}, RUN));
+  PetscCall(opt.Bool("-mms", "manufactured solution d = a sin(pi x)sin(pi y)sin(pi z)(1,1,1) on the unit cube", &sc.mms, PROBLEM));
+  PetscCall(opt.Real("-mms_amplitude", "the amplitude a of the manufactured solution", &sc.mmsAmplitude, Any, PROBLEM));
+  PetscCall(opt.Enum("-mms_flow", "-physics fluid -mms: the manufactured flow (exact velocity on the boundary but -fluid_outlet, exact traction there)", FlowMMSKindNames, &sc.mmsFlow, PROBLEM));
+  PetscCall(opt.Real("-mms_ramp", "the trigonometric manufactured flow rises as sin^2(pi t / 2T) over this time T (s); 0: steady", &sc.mmsRamp, NonNegative, PROBLEM));
   n = 2;
-  PetscCall(PetscOptionsRealArray("-lame", "verification against Lame's cylinder: inner,outer radius", nullptr, sc.lameRadii, &n, nullptr));
-  PetscCall(PetscOptionsString("-output", "XDMF file of the solution over time (+ .h5 beside it); empty: none", nullptr, sc.output, sc.output, sizeof(sc.output), nullptr));
-  PetscCall(PetscOptionsInt("-output_every", "write every n-th step", nullptr, sc.outputEvery, &sc.outputEvery, nullptr));
-  PetscCall(PetscOptionsString("-checkpoint", "checkpoint file (PETSc binary); empty: none", nullptr, sc.checkpoint, sc.checkpoint, sizeof(sc.checkpoint), nullptr));
-  PetscCall(PetscOptionsInt("-checkpoint_every", "write the checkpoint every n-th step", nullptr, sc.checkpointEvery, &sc.checkpointEvery, nullptr));
-  PetscCall(PetscOptionsString("-restart", "continue from this checkpoint (same mesh, options and number of ranks)", nullptr, sc.restart, sc.restart, sizeof(sc.restart), nullptr));
-  PetscCall(PetscOptionsString("-report", "run report (JSON): unknowns, iterations per step, errors, time per phase, memory; empty: none", nullptr, sc.report, sc.report, sizeof(sc.report), nullptr));
+  PetscCall(opt.Reals("-lame", "verification against Lame's cylinder: inner,outer radius", sc.lameRadii, &n, &set, Positive, RUN));
+  PetscCheck(!set || n == 2, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-lame: give the inner and the outer radius, Ri,Ro (got %" PetscInt_FMT " values)", n);
+  PetscCheck(!set || sc.lameRadii[0] < sc.lameRadii[1], PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-lame %s,%s: the inner radius must be smaller than the outer one (give Ri,Ro)", Number(sc.lameRadii[0]).c_str(), Number(sc.lameRadii[1]).c_str());
+  PetscCall(opt.String("-output", "XDMF file of the solution over time (+ .h5 beside it); empty: none", sc.output, sizeof(sc.output), RUN));
+  PetscCall(opt.Int("-output_every", "write every n-th step", &sc.outputEvery, AtLeast(1), RUN));
+  PetscCall(opt.String("-checkpoint", "checkpoint file (PETSc binary); empty: none", sc.checkpoint, sizeof(sc.checkpoint), RUN));
+  PetscCall(opt.Int("-checkpoint_every", "write the checkpoint every n-th step", &sc.checkpointEvery, AtLeast(1), RUN));
+  PetscCall(opt.String("-restart", "continue from this checkpoint (same mesh, options and number of ranks)", sc.restart, sizeof(sc.restart), RUN));
+  PetscCall(opt.String("-report", "run report (JSON): unknowns, iterations per step, errors, time per phase, memory; empty: none", sc.report, sizeof(sc.report), RUN));
   PetscOptionsEnd();
-  PetscCheck(sc.E > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-E %g: Young's modulus must be positive", (double)sc.E);
-  PetscCheck(sc.nu > -1 && sc.nu < 0.5, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-nu %g: the Poisson ratio must lie in (-1, 0.5)", (double)sc.nu);
-  PetscCheck(sc.mu > 0 && sc.kappa > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-nh_mu %g -nh_kappa %g: both moduli must be positive", (double)sc.mu, (double)sc.kappa);
-  PetscCheck(sc.arterial[0] > 0 && sc.arterial[1] > 0 && sc.arterial[2] > 1 && sc.arterial[3] >= 0 && sc.arterial[4] >= 2, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
-             "-arterial %g,%g,%g,%g,%g: need c1 > 0, eps1 > 0, eps2 > 1, alpha1 >= 0, alpha2 >= 2 (polyconvexity and a C2 energy)", (double)sc.arterial[0], (double)sc.arterial[1], (double)sc.arterial[2], (double)sc.arterial[3], (double)sc.arterial[4]);
-  PetscCheck(sc.fibreAngle >= 0 && sc.fibreAngle <= 90, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-arterial_fibre_angle %g: degrees in [0, 90]", (double)sc.fibreAngle);
-  PetscCheck(sc.degree >= 1 && sc.degree <= 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_degree %" PetscInt_FMT ": use 1, 2 or 3", sc.degree);
-  PetscCheck(sc.dt >= 0 && (sc.dt == 0 || sc.tFinal >= sc.dt), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-dt %g -t_final %g: need 0 <= dt <= t_final", (double)sc.dt, (double)sc.tFinal);
-  PetscCheck(sc.geometryRamp >= 0 && sc.mmsRamp >= 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-geometry_ramp %g -mms_ramp %g: must be >= 0", (double)sc.geometryRamp, (double)sc.mmsRamp);
+  PetscCall(CheckTimeSteps(sc));
   PetscCheck(!sc.movingMesh || sc.physics == PHYSICS_FLUID, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_moving_mesh: only with -physics fluid (-physics %s)", PhysicsNames[sc.physics]);
   if (blocks[0]) sc.blocks = SplitList(blocks);
   else if (sc.physics == PHYSICS_FSI) sc.blocks = {"structure", "fluid", "geometry", "coupling"};
@@ -117,13 +271,7 @@ PetscErrorCode ReadScene(Scene &sc)
     PetscCheck(!coupled || g.substr(0, g.find(':')) != sc.interface, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_noslip %s: on the interface %s the fluid moves with the wall (the coupling's u = d_t d_s); remove it from -fluid_noslip", sc.noslip, sc.interface);
   PetscCheck(!sc.inflow || (sc.inletPressure == 0 && !sc.mms && sc.poiseuille[0] == 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_inflow_velocity: the inlet cannot also take -fluid_inlet_pressure, -mms or -poiseuille (one condition per face)");
   PetscCheck(!sc.movingMesh || !sc.noslip[0], PETSC_COMM_WORLD, PETSC_ERR_SUP, "-fluid_moving_mesh with -fluid_noslip %s: a wall that moves needs u = w (the mesh velocity) there, which the coupling to the structure will impose; until then a moving mesh takes the manufactured flows' boundary values (-mms) and -fluid_noslip must be empty", sc.noslip);
-  PetscCheck(sc.ramp >= 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_pressure_ramp %g: must be >= 0", (double)sc.ramp);
-  PetscCheck(sc.rhoFluid > 0 && sc.muFluid > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-fluid_density %g -fluid_viscosity %g: both must be positive", (double)sc.rhoFluid, (double)sc.muFluid);
-  PetscCheck(sc.rho > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_density %g: must be positive", (double)sc.rho);
-  PetscCheck(sc.loadSteps >= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_load_steps %" PetscInt_FMT ": at least 1", sc.loadSteps);
-  PetscCheck(sc.maxCuts >= 0 && sc.maxCuts <= 20, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-max_step_cuts %" PetscInt_FMT ": between 0 and 20", sc.maxCuts);
-  PetscCheck(sc.subdomains >= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-structure_subdomains %" PetscInt_FMT ": at least 1", sc.subdomains);
-  PetscCheck(sc.outputEvery >= 1 && sc.checkpointEvery >= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-output_every %" PetscInt_FMT " -checkpoint_every %" PetscInt_FMT ": at least 1", sc.outputEvery, sc.checkpointEvery);
+  PetscCall(CheckOutputFiles(sc));
   PetscFunctionReturn(0);
 }
 

@@ -5,6 +5,7 @@
 #include "solver/time_history.h"
 #include "structure/materials.h"
 #include "verification/mms.h"
+#include <map>
 #include <string>
 #include <vector>
 
@@ -69,9 +70,11 @@ struct Scene {
   /* files */
   char     output[PETSC_MAX_PATH_LEN] = "", checkpoint[PETSC_MAX_PATH_LEN] = "", restart[PETSC_MAX_PATH_LEN] = "", report[PETSC_MAX_PATH_LEN] = "";
   PetscInt outputEvery = 1, checkpointEvery = 10;
+  /* the options that define the problem, with their values: a restart must have the same */
+  std::map<std::string, std::string> problem;
 
   PetscBool Dynamic() const { return (PetscBool)(dt > 0); }
-  PetscInt  Steps() const { return Dynamic() ? (PetscInt)PetscCeilReal(tFinal / dt - 1e-9) : loadSteps; }
+  PetscInt  Steps() const { return Dynamic() ? (PetscInt)PetscFloorReal(tFinal / dt + 0.5) : loadSteps; } /* ReadScene checked: a whole number */
 };
 
 PetscErrorCode ReadScene(Scene &sc);

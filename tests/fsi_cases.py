@@ -824,27 +824,161 @@ def structure_loads():
     out = run([APP] + cube + ["-structure_traction", "1,0,0"], 1, fail=True)
     assert "-structure_traction: name the faces it acts on with -structure_traction_group" in out
 
+# ---- bad input: each stops with one sentence naming the option or file, on every rank
+def refused(cmd, msg, np=1):
+    """Run cmd, which must fail with msg, printed once (by rank 0 for all ranks), before any step."""
+    out = run(cmd, np, fail=True)
+    assert out.count(msg) == 1, (msg, out[-3000:])
+    assert not re.search(r"^\[[1-9]\d*\]PETSC ERROR", out, re.M) and "Caught signal" not in out, out[-3000:]
+    return out
+
 
 @case
 def structure_bad_options():
+    """Options out of their range, incomplete arrays, unknown names: a sentence naming the option
+    and what it may take."""
     mesh = os.path.join(MESHES, "tube1_L0.msh")
-    for opts, msg in ((["-nu", 0.5], "-nu 0.5: the Poisson ratio must lie in (-1, 0.5)"),
-                      (["-E", -1], "Young's modulus must be positive"),
+    for opts, msg in ((["-nu", 0.5], "-nu: value must be in (-1, 0.5) (got 0.5)"),
+                      (["-E", -1], "-E: value must be positive (got -1)"),
                       (["-arterial", "1,2"], "-arterial: give all five of c1,eps1,eps2,alpha1,alpha2 (got 2)"),
                       (["-arterial", "1,1,0.5,1,5"], "need c1 > 0, eps1 > 0, eps2 > 1, alpha1 >= 0, alpha2 >= 2"),
-                      (["-max_step_cuts", -1], "-max_step_cuts -1: between 0 and 20"),
-                      (["-time_scheme", "bdf3"], "bdf3"),
+                      (["-max_step_cuts", -1], "-max_step_cuts: value must be in [0, 20] (got -1)"),
+                      (["-time_scheme", "bdf3"], "Unknown option bdf3 for -time_scheme. Available options: backward_euler bdf2"),
                       (["-output", "out.vtk"], "-output out.vtk: name the file <name>.xdmf"),
                       (["-restart", "nothere.chk"], "-restart nothere.chk: no such checkpoint"),
-                      (["-nh_mu", -1, "-material", "neohooke"], "both moduli must be positive"),
+                      (["-nh_mu", -1, "-material", "neohooke"], "-nh_mu: value must be positive (got -1)"),
                       (["-structure_region", "lumen"], "has no physical group 'lumen', which this scene needs"),
-                      (["-structure_subdomains", 0], "-structure_subdomains 0: at least 1"),
-                      (["-dt", -1], "need 0 <= dt <= t_final"),
-                      (["-structure_load_steps", 0], "-structure_load_steps 0: at least 1"),
-                      (["-structure_clamp", "wall_inlet_ring:w"], "-structure_clamp wall_inlet_ring:w: components are x, y, z")):
-        out = run([APP, "-mesh", mesh] + WALL[2:] + [str(o) for o in opts], 1, fail=True)
-        assert msg in out, msg
+                      (["-structure_subdomains", 0], "-structure_subdomains: value must be >= 1 (got 0)"),
+                      (["-dt", -1], "-dt: value must be >= 0 (got -1)"),
+                      (["-structure_load_steps", 0], "-structure_load_steps: value must be >= 1 (got 0)"),
+                      (["-structure_clamp", "wall_inlet_ring:w"], "-structure_clamp wall_inlet_ring:w: components are x, y, z"),
+                      (["-fluid_density", 0], "-fluid_density: value must be positive (got 0)"),
+                      (["-structure_degree", 4], "-structure_degree: value must be in [1, 3] (got 4)"),
+                      (["-lame", "2,1"], "-lame 2,1: the inner radius must be smaller than the outer one (give Ri,Ro)"),
+                      (["-lame", "1"], "-lame: give the inner and the outer radius, Ri,Ro (got 1 values)"),
+                      (["-lame", "-1,2"], "-lame: value 1 must be positive (got -1)")):
+        refused([APP, "-mesh", mesh] + WALL[2:] + [str(o) for o in opts], msg)
 
+
+@case
+def options_not_finite():
+    """Every real option of -help (scalars and arrays), given nan, stops with its name before
+    the mesh is read (it used to reach Newton as four halvings and "apply the load in more
+    increments"); inf too, on 2 ranks."""
+    scene = run([APP, "-help"], 1, fail=None).split("fsi_app scene:")[1].split("-----")[0]  # the application's options
+    reals = re.findall(r"^\s+(-[a-z_0-9A-Z]+) <-?\d[\d.e+]*[.e][\d.e+]*[ >]", scene, re.M)
+    print(len(reals), "real options:", " ".join(reals))
+    assert len(reals) >= 25 and {"-structure_pressure", "-structure_body_force", "-fluid_inlet_pressure", "-mms_amplitude", "-geometry_amplitude", "-dt"} <= set(reals)
+    for name in reals:
+        out = refused([APP, name, "nan"], f"{name}: value must be a finite number (got nan)")
+        assert "unknowns:" not in out
+    for name, value in (("-structure_pressure", "inf"), ("-structure_body_force", "0,0,-inf"), ("-fluid_inlet_pressure", "1e400")):
+        refused([APP, "-options_file", FSI, name, value], f"{name}: value{' 3' if ',' in value else ''} must be a finite number (got {'-' if '-inf' in value else ''}inf)", np=2)
+
+
+@case
+def time_steps_bad():
+    """dt and t_final: finite, at least one step, a whole number of steps that the step counter
+    holds (a step count past 2^31 used to wrap to none: exit 0 after no step); 0.1 to 0.3 is 3
+    steps although 0.3 / 0.1 is 2.9999999999999996 in floating point."""
+    cube = ["-mesh", os.path.join(MESHES, "cube_L0.msh"), "-structure_clamp", "x0", "-structure_pressure_group", "x1", "-structure_pressure", 0.01,
+            "-ksp_type", "preonly", "-pc_type", "lu"]
+    for opts, msg in ((["-dt", 1e-10, "-t_final", 1], "-dt 1e-10 -t_final 1: 1e+10 steps, more than a run can count (2147483647)"),
+                      (["-dt", "inf", "-t_final", "inf"], "-dt: value must be a finite number (got inf)"),
+                      (["-dt", 0.1, "-t_final", "nan"], "-t_final: value must be a finite number (got nan)"),
+                      (["-dt", 0.3, "-t_final", 1], "-dt 0.3 -t_final 1: the end time must be a whole number of steps (it is 3.33333 steps): take -t_final 0.9 or 1.2"),
+                      (["-dt", 2, "-t_final", 1], "-dt 2 -t_final 1: the end time must be at least one step")):
+        refused([APP] + cube + [str(o) for o in opts], msg, np=2 if "inf" in opts else 1)
+    out = run([APP] + cube + ["-dt", 0.1, "-t_final", 0.3], 1)
+    assert "step 3/3 t 3.0000e-01" in out and "step 4" not in out, out
+
+
+def corrupt(lines, header, edit):
+    """lines with the first line after `header` (a section name) that matches the regex edit[0]
+    rewritten by edit[1]; the new lines and the 1-based number of the edited line."""
+    at = next(k for k in range(lines.index(header), len(lines)) if re.match(edit[0], lines[k]))
+    return lines[:at] + [edit[1](lines[at])] + lines[at + 1:], at + 1
+
+
+@case
+def mesh_bad_files():
+    """Damaged copies of cube_L0.msh: an element naming a node that does not exist (a segfault
+    in PETSc's reader on 1 rank, a wrong mesh on 2), a block naming an entity that does not
+    exist (a segfault), a NaN coordinate (accepted), a file cut short inside $Nodes or $Elements
+    (PETSc's "Insufficient data" without the file's name), the format 2.2: a sentence naming
+    the file and the line, on 1 and 2 ranks."""
+    tmp = tempfile.mkdtemp()
+    text = open(os.path.join(MESHES, "cube_L0.msh")).read()
+    lines = text.split("\n")
+    cases = []
+
+    def damaged(name, new_lines):
+        path = os.path.join(tmp, name + ".msh")
+        open(path, "w").write("\n".join(new_lines))
+        return path
+
+    tet_block = corrupt(lines, "$Elements", (r"^3 \d+ 4 \d+$", lambda l: l))[1]  # the first tetrahedron follows its block's header
+    tet = lines[tet_block].split()
+    bad, at = corrupt(lines, "$Elements", (r"^" + tet[0] + " ", lambda l: " ".join(tet[:-1] + ["1000"])))
+    cases.append((damaged("node", bad), f"line {at}: element {tet[0]} names node 1000, which $Nodes does not define"))
+    bad, at = corrupt(lines, "$Nodes", (r"^3 \d+ 0 \d+$", lambda l: "3 99 0 " + l.split()[3]))
+    cases.append((damaged("entity", bad), f"line {at}: the block names the entity 99 of dimension 3, which $Entities does not define"))
+    block = corrupt(lines, "$Nodes", (r"^3 \d+ 0 \d+$", lambda l: l))[1]
+    n = int(lines[block - 1].split()[3])  # its n tags, then its n coordinate lines
+    bad = lines[:block + n] + ["nan " + lines[block + n].split(" ", 1)[1]] + lines[block + n + 1:]
+    cases.append((damaged("nan", bad), f"line {block + n + 1}: node {lines[block]} has the coordinate 'nan': coordinates must be finite numbers"))
+    for section in ("$Nodes", "$Elements"):
+        cut = text[:text.index(section) + (text.index("$End" + section[1:]) - text.index(section)) // 2]
+        cases.append((damaged("cut" + section[1:], cut.split("\n")), f"ends inside {section} (line {cut.count(chr(10)) + 1}): the file is truncated"))
+    cases.append((damaged("v22", ["$MeshFormat", "2.2 0 8"] + lines[2:]), "is gmsh format 2.2: fsi_app reads format 4.1 ASCII"))
+    for path, msg in cases:
+        for np in (1, 2):
+            refused([APP, "-mesh", path], f"mesh file '{path}' {msg}", np)
+    shutil.rmtree(tmp)
+
+
+@case
+def output_paths_bad():
+    """-output, -report and -checkpoint where they cannot be written stop before the mesh is read,
+    naming the option and the path (the output used to fail after pages of HDF5 diagnostics,
+    the report after the whole run)."""
+    tmp = tempfile.mkdtemp()
+    missing, afile = os.path.join(tmp, "missing"), os.path.join(tmp, "afile")
+    open(afile, "w").close()
+    cube = ["-mesh", os.path.join(MESHES, "cube_L0.msh"), "-structure_clamp", "x0", "-dt", 0.1, "-t_final", 0.2]
+    for opt, path, why in (("-output", os.path.join(missing, "o.xdmf"), f"the directory {missing} does not exist"),
+                           ("-report", os.path.join(missing, "r.json"), f"the directory {missing} does not exist"),
+                           ("-checkpoint", os.path.join(afile, "c.chk"), f"{afile} is not a directory"),
+                           ("-report", tmp, "it is a directory")):
+        for np in (1, 2):
+            out = refused([APP] + cube + [opt, path], f"{opt} {path}: the run cannot write this file ({why})", np)
+            assert "unknowns:" not in out
+    assert os.listdir(tmp) == ["afile"], os.listdir(tmp)
+    shutil.rmtree(tmp)
+
+
+@case
+def restart_bad():
+    """A restart from a truncated checkpoint, from a file that is not one, and with other
+    boundary conditions (the same number of unknowns) or another modulus: a sentence naming
+    the file and what differs; the same problem with other solver options restarts."""
+    tmp = tempfile.mkdtemp()
+    chk, half = os.path.join(tmp, "c.chk"), os.path.join(tmp, "half.chk")
+    base = ["-mesh", os.path.join(MESHES, "cube_L0.msh"), "-structure_pressure_group", "x1", "-structure_pressure", 0.01, "-structure_density", 1,
+            "-dt", 0.1, "-ksp_type", "preonly", "-pc_type", "lu"]
+    run([APP] + base + ["-structure_clamp", "x0", "-t_final", 0.2, "-checkpoint", chk])
+    size = os.path.getsize(chk)
+    open(half, "wb").write(open(chk, "rb").read()[:size // 2])
+    resume = [APP] + base + ["-t_final", 0.4]
+    for np in (1, 2):
+        refused(resume + ["-structure_clamp", "x0", "-restart", half], f"-restart {half}: {size // 2} bytes where its header announces {size}: the file is truncated", np)
+    mesh = os.path.join(MESHES, "cube_L0.msh")
+    refused(resume + ["-structure_clamp", "x0", "-restart", mesh], f"-restart {mesh}: not an fsi_app checkpoint")
+    refused(resume + ["-structure_clamp", "y0", "-restart", chk], f"-restart {chk}: written with -structure_clamp x0, this run has -structure_clamp y0")
+    refused(resume + ["-structure_clamp", "x0", "-E", 2, "-restart", chk], f"-restart {chk}: written with -E 1, this run has -E 2")
+    out = run(resume + ["-structure_clamp", "x0", "-restart", chk, "-ksp_type", "cg", "-pc_type", "jacobi", "-ksp_rtol", 1e-10])
+    assert "restart from" in out and "step 4/4" in out, out
+    shutil.rmtree(tmp)
 
 
 # ---- the coupled problem: the pressure wave in tube #1 (scenes/fsi_tube1_*.opts)

@@ -1,13 +1,51 @@
 #include "checkpoint.h"
+#include "files.h"
 #include "discretization/conditions.h"
 #include <cstdio>
+#include <sstream>
 
 namespace fsi {
 
-static const PetscInt Magic = 0x46534943; /* "FSIC" */
+static const PetscInt Magic = 0x46534932; /* "FSI2": with the problem's options */
 
-/* header: magic, step, ranks, global size, scheme, past states; then t, dt */
-PetscErrorCode CheckpointWrite(const char *file, DM dm, const CheckpointHeader &c, Vec x, const TimeHistory &h)
+/* header: magic, step, ranks, global size, scheme, past states, length of the problem's text;
+   then t, dt; the text ("-option value" lines); the solution and the past states */
+enum { HEAD_MAGIC, HEAD_STEP, HEAD_RANKS, HEAD_SIZE, HEAD_SCHEME, HEAD_PAST, HEAD_TEXT, HEAD_LEN };
+
+static std::string ProblemText(const std::map<std::string, std::string> &problem)
+{
+  std::string text;
+  for (const auto &o : problem) text += o.first + " " + o.second + "\n";
+  return text;
+}
+
+/* Bytes of a checkpoint with this header: PETSc binary writes each vector as its class id
+   and size, then its entries. */
+static long long CheckpointBytes(const PetscInt head[HEAD_LEN])
+{
+  const long long vec = 2 * sizeof(PetscInt) + (long long)head[HEAD_SIZE] * sizeof(PetscScalar);
+  return HEAD_LEN * sizeof(PetscInt) + 2 * sizeof(PetscReal) + head[HEAD_TEXT] + (1 + head[HEAD_PAST]) * vec;
+}
+
+/* The first option whose value differs from the checkpoint's, as a sentence; "" if none. */
+static std::string ProblemDifference(const char *file, const std::string &written, const std::map<std::string, std::string> &problem)
+{
+  std::map<std::string, std::string> then;
+  std::istringstream                 in(written);
+  auto                               shown = [](const std::string &v) { return v.empty() ? std::string("(empty)") : v; };
+  for (std::string line; std::getline(in, line);) {
+    const size_t space = line.find(' ');
+    then[line.substr(0, space)] = space == std::string::npos ? "" : line.substr(space + 1);
+  }
+  for (const auto &o : problem) {
+    const auto t = then.find(o.first);
+    if (t == then.end()) return std::string("-restart ") + file + ": written without " + o.first + " (by another version of fsi_app); restart from a checkpoint of this version";
+    if (t->second != o.second) return std::string("-restart ") + file + ": written with " + o.first + " " + shown(t->second) + ", this run has " + o.first + " " + shown(o.second) + ": a restart continues the problem of the run that wrote it; give the same options";
+  }
+  return "";
+}
+
+PetscErrorCode CheckpointWrite(const char *file, DM dm, const CheckpointHeader &c, const std::map<std::string, std::string> &problem, Vec x, const TimeHistory &h)
 {
   PetscViewer viewer;
   PetscMPIInt size, rank;
@@ -25,10 +63,12 @@ PetscErrorCode CheckpointWrite(const char *file, DM dm, const CheckpointHeader &
   PetscCall(PetscViewerBinarySetSkipInfo(viewer, PETSC_TRUE));
   PetscCall(PetscViewerFileSetMode(viewer, FILE_MODE_WRITE));
   PetscCall(PetscViewerFileSetName(viewer, tmp));
-  const PetscInt  head[6] = {Magic, c.step, size, N, h.scheme, (PetscInt)h.past.size()};
-  const PetscReal times[2] = {c.t, h.dt};
-  PetscCall(PetscViewerBinaryWrite(viewer, head, 6, PETSC_INT));
+  const std::string text           = ProblemText(problem);
+  const PetscInt    head[HEAD_LEN] = {Magic, c.step, size, N, h.scheme, (PetscInt)h.past.size(), (PetscInt)text.size()};
+  const PetscReal   times[2]       = {c.t, h.dt};
+  PetscCall(PetscViewerBinaryWrite(viewer, head, HEAD_LEN, PETSC_INT));
   PetscCall(PetscViewerBinaryWrite(viewer, times, 2, PETSC_REAL));
+  PetscCall(PetscViewerBinaryWrite(viewer, text.c_str(), (PetscInt)text.size(), PETSC_CHAR));
   PetscCall(VecView(x, viewer));
   PetscCall(DMGetGlobalVector(dm, &g));
   for (Vec past : h.past) {
@@ -42,19 +82,23 @@ PetscErrorCode CheckpointWrite(const char *file, DM dm, const CheckpointHeader &
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CheckpointRead(const char *file, DM dm, CheckpointHeader &c, Vec x, TimeHistory &h)
+PetscErrorCode CheckpointRead(const char *file, DM dm, const std::map<std::string, std::string> &problem, CheckpointHeader &c, Vec x, TimeHistory &h)
 {
   MPI_Comm    comm = PetscObjectComm((PetscObject)dm);
   PetscViewer viewer;
   PetscMPIInt size;
-  PetscInt    N, head[6];
+  PetscInt    N, head[HEAD_LEN];
   PetscReal   times[2];
   PetscBool   exists;
+  long long   bytes;
+  std::string text;
   Vec         g;
 
   PetscFunctionBegin;
   PetscCall(PetscTestFile(file, 'r', &exists));
   PetscCheck(exists, comm, PETSC_ERR_FILE_OPEN, "-restart %s: no such checkpoint (written by -checkpoint <file> -checkpoint_every <n>)", file);
+  PetscCall(FileSize(comm, file, &bytes));
+  PetscCheck(bytes >= (long long)(HEAD_LEN * sizeof(PetscInt)), comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: %lld bytes, shorter than a checkpoint's header: the file is truncated or not an fsi_app checkpoint", file, bytes);
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(VecGetSize(x, &N));
   PetscCall(PetscViewerCreate(comm, &viewer));
@@ -62,15 +106,20 @@ PetscErrorCode CheckpointRead(const char *file, DM dm, CheckpointHeader &c, Vec 
   PetscCall(PetscViewerBinarySetSkipInfo(viewer, PETSC_TRUE));
   PetscCall(PetscViewerFileSetMode(viewer, FILE_MODE_READ));
   PetscCall(PetscViewerFileSetName(viewer, file));
-  PetscCall(PetscViewerBinaryRead(viewer, head, 6, nullptr, PETSC_INT));
-  PetscCheck(head[0] == Magic, comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: not an fsi_app checkpoint", file);
-  PetscCheck(head[2] == size, comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written by %" PetscInt_FMT " ranks; restart on as many (mpiexec -n %" PetscInt_FMT "): the unknowns are numbered per partition", file, head[2], head[2]);
-  PetscCheck(head[3] == N, comm, PETSC_ERR_ARG_INCOMP, "-restart %s: holds %" PetscInt_FMT " unknowns, this scene has %" PetscInt_FMT ": use the mesh and options of the run that wrote it", file, head[3], N);
-  PetscCheck(head[4] == h.scheme && head[5] == (PetscInt)h.past.size(), comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written with -time_scheme %s and %" PetscInt_FMT " past states, this run has -time_scheme %s (%s)", file,
-             TimeSchemeNames[head[4]], head[5], TimeSchemeNames[h.scheme], h.past.empty() ? "statics" : "dynamics");
+  PetscCall(PetscViewerBinaryRead(viewer, head, HEAD_LEN, nullptr, PETSC_INT));
+  PetscCheck(head[HEAD_MAGIC] == Magic, comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: not an fsi_app checkpoint (or one of an older version)", file);
+  PetscCheck(bytes == CheckpointBytes(head), comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: %lld bytes where its header announces %lld: the file is truncated or damaged, not a whole checkpoint", file, bytes, CheckpointBytes(head));
   PetscCall(PetscViewerBinaryRead(viewer, times, 2, nullptr, PETSC_REAL));
+  text.resize(head[HEAD_TEXT]);
+  PetscCall(PetscViewerBinaryRead(viewer, &text[0], head[HEAD_TEXT], nullptr, PETSC_CHAR));
+  const std::string differs = ProblemDifference(file, text, problem);
+  PetscCheck(differs.empty(), comm, PETSC_ERR_ARG_INCOMP, "%s", differs.c_str());
+  PetscCheck(head[HEAD_RANKS] == size, comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written by %" PetscInt_FMT " ranks; restart on as many (mpiexec -n %" PetscInt_FMT "): the unknowns are numbered per partition", file, head[HEAD_RANKS], head[HEAD_RANKS]);
+  PetscCheck(head[HEAD_SIZE] == N, comm, PETSC_ERR_ARG_INCOMP, "-restart %s: holds %" PetscInt_FMT " unknowns, this scene has %" PetscInt_FMT ": use the mesh and options of the run that wrote it", file, head[HEAD_SIZE], N);
+  PetscCheck(head[HEAD_SCHEME] == h.scheme && head[HEAD_PAST] == (PetscInt)h.past.size(), comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written with -time_scheme %s and %" PetscInt_FMT " past states, this run has -time_scheme %s (%s)", file,
+             TimeSchemeNames[head[HEAD_SCHEME]], head[HEAD_PAST], TimeSchemeNames[h.scheme], h.past.empty() ? "statics" : "dynamics");
   PetscCheck(PetscAbsReal(times[1] - h.dt) <= 1e-12 * PetscAbsReal(h.dt), comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written with step %g, this run has %g", file, (double)times[1], (double)h.dt);
-  c.step = head[1], c.t = times[0];
+  c.step = head[HEAD_STEP], c.t = times[0];
   PetscCall(VecLoad(x, viewer));
   PetscCall(DMGetGlobalVector(dm, &g));
   for (size_t j = 0; j < h.past.size(); j++) { /* x^(n-j) at t - j dt, with its essential values */

@@ -1,9 +1,12 @@
 /* Checkpoints: the state a run needs to continue exactly as if never stopped (step, time, the
-   solution and the past states of the time scheme), in PETSc binary, written to a temporary
-   file and renamed, so a crash while writing leaves the previous checkpoint intact. */
+   solution and the past states of the time scheme) and the options that define its problem,
+   in PETSc binary, written to a temporary file and renamed, so a crash while writing leaves
+   the previous checkpoint intact. */
 #pragma once
 
 #include "solver/time_history.h"
+#include <map>
+#include <string>
 
 namespace fsi {
 
@@ -12,9 +15,12 @@ struct CheckpointHeader {
   PetscReal t    = 0;
 };
 
-PetscErrorCode CheckpointWrite(const char *file, DM dm, const CheckpointHeader &c, Vec x, const TimeHistory &h);
+/* `problem`: the options that define the problem and their values (Scene::problem). */
+PetscErrorCode CheckpointWrite(const char *file, DM dm, const CheckpointHeader &c, const std::map<std::string, std::string> &problem, Vec x, const TimeHistory &h);
 
-/* Errors name the file and what does not match this run (ranks, unknowns, time scheme). */
-PetscErrorCode CheckpointRead(const char *file, DM dm, CheckpointHeader &c, Vec x, TimeHistory &h);
+/* Errors name the file and what does not match this run: a file that is not a whole
+   checkpoint (truncated: its size is not the one its header announces), the ranks, the
+   unknowns, the time scheme, the step, and the first option of `problem` whose value differs. */
+PetscErrorCode CheckpointRead(const char *file, DM dm, const std::map<std::string, std::string> &problem, CheckpointHeader &c, Vec x, TimeHistory &h);
 
 } // namespace fsi

@@ -140,7 +140,6 @@ PetscErrorCode XdmfOpen(const char *file, DM dm, const std::vector<OutputPart> &
   std::string f      = file;
 
   PetscFunctionBegin;
-  PetscCheck(f.size() > 5 && f.substr(f.size() - 5) == ".xdmf", PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_WRONG, "-output %s: name the file <name>.xdmf (the data go to <name>.h5)", file);
   s.xdmf = f, s.h5 = f.substr(0, f.size() - 5) + ".h5", s.dm = dm, s.times = times;
   if (times.empty()) PetscCall(PetscViewerHDF5Open(PetscObjectComm((PetscObject)dm), s.h5.c_str(), FILE_MODE_WRITE, &viewer)); /* a restart finds the meshes in the file */
   for (const OutputPart &op : parts) {

@@ -36,9 +36,10 @@ struct XdmfSeries {
   std::vector<PetscReal> times; /* frames written */
 };
 
-/* Open the series `file` (.xdmf; the data go to the same name with .h5) of dm's fields on the
-   parts {name, P2 cells (kept by reference), {field name, field number}}. With `times` (a
-   restart), the frames already written at those times are kept and the series continues. */
+/* Open the series `file` (<name>.xdmf, as ReadScene checks; the data go to <name>.h5) of dm's
+   fields on the parts {name, P2 cells (kept by reference), {field name, field number}}. With
+   `times` (a restart), the frames already written at those times are kept and the series
+   continues. */
 PetscErrorCode XdmfOpen(const char *file, DM dm, const std::vector<OutputPart> &parts, const std::vector<PetscReal> &times, XdmfSeries &s);
 PetscErrorCode XdmfWriteFrame(XdmfSeries &s, PetscReal t, Vec x);
 PetscErrorCode XdmfClose(XdmfSeries &s);

@@ -1,30 +1,11 @@
 #include "mesh.h"
+#include "gmsh_file.h"
+#include "io/files.h"
 #include <petscsf.h>
 #include <metis.h>
 #include <algorithm>
-#include <fstream>
 
 namespace fsi {
-
-/* A readable gmsh file, checked on rank 0 so that a bad path is one clear error, not a parser's. */
-static PetscErrorCode CheckFile(MPI_Comm comm, const std::string &file)
-{
-  PetscMPIInt rank;
-  int         status = 0; /* 0 ok, 1 missing, 2 not gmsh */
-  std::string first;
-
-  PetscFunctionBegin;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (!rank) {
-    std::ifstream in(file);
-    if (!in) status = 1;
-    else if (!std::getline(in, first) || first.rfind("$MeshFormat", 0) != 0) status = 2;
-  }
-  PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, comm));
-  PetscCheck(status != 1, comm, PETSC_ERR_FILE_OPEN, "mesh file '%s' does not exist or cannot be read (option -mesh); scripts/make-meshes makes the tube, cube and cylinder meshes", file.c_str());
-  PetscCheck(status != 2, comm, PETSC_ERR_FILE_UNEXPECTED, "mesh file '%s' is not a gmsh .msh file: it must start with $MeshFormat", file.c_str());
-  PetscFunctionReturn(0);
-}
 
 PetscErrorCode CountLabel(DM dm, const std::string &name, PetscInt depth, PetscInt *count)
 {
@@ -135,7 +116,7 @@ PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vecto
   PetscBool set;
 
   PetscFunctionBegin;
-  PetscCall(CheckFile(comm, file));
+  PetscCall(CheckOnRankZero(comm, PETSC_ERR_FILE_UNEXPECTED, [&]() { return GmshFileProblem(file); })); /* where PETSc reads it */
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-dm_plex_gmsh_use_regions", &set));
   if (!set) PetscCall(PetscOptionsSetValue(nullptr, "-dm_plex_gmsh_use_regions", "true")); /* labels named by physical groups */
   PetscCall(DMPlexCreateGmshFromFile(comm, file.c_str(), PETSC_TRUE, dm));

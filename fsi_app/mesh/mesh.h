@@ -8,10 +8,10 @@
 
 namespace fsi {
 
-/* Read `file` (gmsh .msh, 2.2 or 4.1), check that every name in `required` is a physical group
-   with at least one entity, and distribute the cells over the ranks of `comm` (METIS on the
-   cell dual graph, balancing the cells of each of `regions` when there are several). Errors
-   name the file, the group, and what the file has. */
+/* Read `file` (gmsh .msh 4.1 ASCII, checked first by GmshFileProblem), check that every name in
+   `required` is a physical group with at least one entity, and distribute the cells over the
+   ranks of `comm` (METIS on the cell dual graph, balancing the cells of each of `regions` when
+   there are several). Errors name the file, the line or group, and what the file has. */
 PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vector<std::string> &required, const std::vector<std::string> &regions, DM *dm);
 
 /* Call f(point) for every point of `label` whose value is in `values` (every value if empty). */

@@ -1,0 +1,23 @@
+/* The files a run reads and writes, checked on rank 0 (where PETSc reads and writes them)
+   before it uses them, so that a bad path or a damaged file is one sentence on every rank
+   that names the option and the file, not a library's error halfway through the run. */
+#pragma once
+
+#include <petscsys.h>
+#include <functional>
+#include <string>
+
+namespace fsi {
+
+/* Run `check` on rank 0 of comm; a nonempty sentence it returns is the error (code `code`)
+   of every rank. */
+PetscErrorCode CheckOnRankZero(MPI_Comm comm, PetscErrorCode code, const std::function<std::string()> &check);
+
+/* The run can write `path` (the value of `option`): its directory exists and takes new files,
+   and the file, if it is there, is a writable file. */
+PetscErrorCode CheckWritable(MPI_Comm comm, const char *option, const std::string &path);
+
+/* The size of `path` in bytes as rank 0 sees it; -1 if it cannot be opened. */
+PetscErrorCode FileSize(MPI_Comm comm, const std::string &path, long long *bytes);
+
+} // namespace fsi

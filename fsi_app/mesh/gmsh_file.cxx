@@ -1,0 +1,204 @@
+#include "gmsh_file.h"
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <set>
+#include <vector>
+
+namespace fsi {
+
+/* Nodes of the element types fsi_app reads: points, lines, triangles, linear tetrahedra. */
+static const std::map<long long, size_t> ElementNodes = {{15, 1}, {1, 2}, {2, 3}, {4, 4}};
+
+static bool Integer(const std::string &t, long long &x)
+{
+  char *end;
+  x = std::strtoll(t.c_str(), &end, 10);
+  return end != t.c_str() && !*end;
+}
+
+static bool Real(const std::string &t, double &x)
+{
+  char *end;
+  x = std::strtod(t.c_str(), &end);
+  return end != t.c_str() && !*end;
+}
+
+/* The file line by line, split into tokens; errors name the file and the line. */
+struct GmshScan {
+  std::string                               file, section, line;
+  std::vector<std::string>                  tok;
+  std::ifstream                             in;
+  long                                      number  = 0;
+  bool                                      partial = false; /* the last line read ends without a newline */
+  std::set<std::pair<long long, long long>> entities;        /* (dimension, tag) of $Entities */
+  bool                                      hasEntities = false;
+  long long                                 nodeMin = 1, tetrahedra = 0;
+  std::vector<bool>                         node; /* node[tag - nodeMin]: defined in $Nodes */
+
+  explicit GmshScan(const std::string &f) : file(f), in(f) { }
+
+  bool Next()
+  {
+    if (!std::getline(in, line)) return false;
+    number++, partial = in.eof();
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    tok.clear();
+    for (size_t b = line.find_first_not_of(" \t"); b != std::string::npos;) {
+      const size_t e = line.find_first_of(" \t", b);
+      tok.push_back(line.substr(b, e == std::string::npos ? e : e - b));
+      b = e == std::string::npos ? e : line.find_first_not_of(" \t", e);
+    }
+    return true;
+  }
+  std::string Cut() const { return "mesh file '" + file + "' ends inside " + section + " (line " + std::to_string(number) + "): the file is truncated"; }
+  std::string At(const std::string &what) const { return partial ? Cut() : "mesh file '" + file + "' line " + std::to_string(number) + ": " + what; }
+  /* the line's first n tokens as integers; false if there are fewer or one is not an integer */
+  bool Integers(size_t n, std::vector<long long> &v) const
+  {
+    v.resize(n);
+    for (size_t i = 0; i < n; i++)
+      if (i >= tok.size() || !Integer(tok[i], v[i])) return false;
+    return true;
+  }
+  std::string End(const std::string &marker)
+  {
+    if (!Next()) return Cut();
+    return line == marker ? "" : At("expected " + marker + ", found '" + line + "': the section holds more than its header announces");
+  }
+  std::string Entity(long long dim, long long tag) const
+  {
+    if (!hasEntities || entities.count({dim, tag})) return "";
+    return At("the block names the entity " + std::to_string(tag) + " of dimension " + std::to_string(dim) + ", which $Entities does not define");
+  }
+  bool Defined(long long tag) const { return tag >= nodeMin && tag - nodeMin < (long long)node.size() && node[tag - nodeMin]; }
+
+  std::string Format();
+  std::string Entities();
+  std::string Nodes();
+  std::string Elements();
+  std::string Skip();
+};
+
+std::string GmshScan::Format()
+{
+  if (!Next()) return Cut();
+  if (tok.size() < 2 || tok[0] != "4.1" || tok[1] != "0") return "mesh file '" + file + "' is gmsh format " + (tok.empty() ? "?" : tok[0]) + (tok.size() > 1 && tok[1] == "1" ? " binary" : "") + ": fsi_app reads format 4.1 ASCII (gmsh -format msh41; scripts/make-meshes writes it)";
+  return End("$EndMeshFormat");
+}
+
+std::string GmshScan::Entities()
+{
+  std::vector<long long> count, tag;
+
+  if (!Next()) return Cut();
+  if (!Integers(4, count)) return At("the $Entities header must be: numPoints numCurves numSurfaces numVolumes");
+  for (long long dim = 0; dim < 4; dim++)
+    for (long long i = 0; i < count[dim]; i++) {
+      if (!Next()) return Cut();
+      if (!Integers(1, tag)) return At("an entity line starts with its tag");
+      entities.insert({dim, tag[0]});
+    }
+  hasEntities = true;
+  return End("$EndEntities");
+}
+
+std::string GmshScan::Nodes()
+{
+  std::vector<long long> h, t;
+  long long              seen = 0;
+
+  if (!Next()) return Cut();
+  if (!Integers(4, h) || h[0] < 0 || h[1] < 0) return At("the $Nodes header must be: numEntityBlocks numNodes minNodeTag maxNodeTag");
+  if (h[1] && (h[2] < 1 || h[3] < h[2] || h[3] - h[2] >= (1LL << 31))) return At("node tags " + std::to_string(h[2]) + " to " + std::to_string(h[3]) + ": tags are positive and span less than 2^31");
+  const long long blocks = h[0], total = h[1];
+  nodeMin = h[2], node.assign(total ? h[3] - h[2] + 1 : 0, false);
+  for (long long b = 0; b < blocks; b++) {
+    if (!Next()) return Cut();
+    if (!Integers(4, h) || h[3] < 0) return At("a node block starts with: entityDim entityTag parametric numNodesInBlock");
+    if (const std::string e = Entity(h[0], h[1]); !e.empty()) return e;
+    const long long n = h[3], values = 3 + (h[2] ? h[0] : 0); /* x y z, and u v w up to the entity's dimension if parametric */
+    std::vector<long long> tags(n);
+    for (long long i = 0; i < n; i++) {
+      if (!Next()) return Cut();
+      if (!Integers(1, t) || tok.size() != 1) return At("expected a node tag, found '" + line + "'");
+      if (t[0] < nodeMin || t[0] - nodeMin >= (long long)node.size()) return At("node tag " + tok[0] + " lies outside the range of the $Nodes header");
+      if (node[t[0] - nodeMin]) return At("node " + tok[0] + " is defined twice");
+      node[t[0] - nodeMin] = true, tags[i] = t[0];
+    }
+    for (long long i = 0; i < n; i++) {
+      double x;
+      if (!Next()) return Cut();
+      if ((long long)tok.size() != values) return At("node " + std::to_string(tags[i]) + ": expected " + std::to_string(values) + " coordinates, found " + std::to_string(tok.size()));
+      for (const std::string &c : tok)
+        if (!Real(c, x) || !std::isfinite(x)) return At("node " + std::to_string(tags[i]) + " has the coordinate '" + c + "': coordinates must be finite numbers");
+    }
+    if ((seen += n) > total) return At("the node blocks hold more nodes than the $Nodes header announces (" + std::to_string(total) + ")");
+  }
+  if (seen != total) return At("the $Nodes header announces " + std::to_string(total) + " nodes, its blocks hold " + std::to_string(seen));
+  return End("$EndNodes");
+}
+
+std::string GmshScan::Elements()
+{
+  std::vector<long long> h, e;
+
+  if (!Next()) return Cut();
+  if (!Integers(4, h) || h[0] < 0 || h[1] < 0) return At("the $Elements header must be: numEntityBlocks numElements minElementTag maxElementTag");
+  const long long blocks = h[0], total = h[1];
+  long long       seen = 0;
+  for (long long b = 0; b < blocks; b++) {
+    if (!Next()) return Cut();
+    if (!Integers(4, h) || h[3] < 0) return At("an element block starts with: entityDim entityTag elementType numElementsInBlock");
+    if (const std::string s = Entity(h[0], h[1]); !s.empty()) return s;
+    const auto type = ElementNodes.find(h[2]);
+    if (type == ElementNodes.end()) return At("element type " + std::to_string(h[2]) + ": fsi_app reads linear tetrahedra (type 4) with their triangles (2), lines (1) and points (15); mesh with gmsh -order 1");
+    if (h[2] == 4) tetrahedra += h[3];
+    for (long long i = 0, n = h[3]; i < n; i++) {
+      if (!Next()) return Cut();
+      if (!Integers(1 + type->second, e) || tok.size() != 1 + type->second) return At("expected an element tag and its " + std::to_string(type->second) + " nodes, found '" + line + "'");
+      for (size_t k = 1; k <= type->second; k++)
+        if (!Defined(e[k])) return At("element " + tok[0] + " names node " + tok[k] + ", which $Nodes does not define");
+    }
+    if ((seen += h[3]) > total) return At("the element blocks hold more elements than the $Elements header announces (" + std::to_string(total) + ")");
+  }
+  if (seen != total) return At("the $Elements header announces " + std::to_string(total) + " elements, its blocks hold " + std::to_string(seen));
+  return End("$EndElements");
+}
+
+/* A section fsi_app does not check ($PhysicalNames, $Comments, ...): up to its end marker. */
+std::string GmshScan::Skip()
+{
+  const std::string marker = "$End" + section.substr(1);
+  while (Next())
+    if (line == marker) return "";
+  return Cut();
+}
+
+std::string GmshFileProblem(const std::string &file)
+{
+  GmshScan    s(file);
+  std::string why;
+  bool        nodes = false, elements = false;
+
+  if (!s.in) return "mesh file '" + file + "' does not exist or cannot be read (option -mesh); scripts/make-meshes makes the tube, cube and cylinder meshes";
+  if (!s.Next() || s.line.rfind("$MeshFormat", 0) != 0) return "mesh file '" + file + "' is not a gmsh .msh file: it must start with $MeshFormat";
+  s.section = "$MeshFormat";
+  if (!(why = s.Format()).empty()) return why;
+  while (why.empty() && s.Next()) {
+    if (s.line.empty()) continue;
+    if (s.line[0] != '$') return s.At("expected a section ($Name), found '" + s.line + "'");
+    s.section = s.line;
+    if (s.line == "$Entities") why = s.Entities();
+    else if (s.line == "$Nodes") why = s.Nodes(), nodes = true;
+    else if (s.line == "$Elements") why = nodes ? s.Elements() : s.At("$Elements before $Nodes"), elements = true;
+    else why = s.Skip();
+  }
+  if (!why.empty()) return why;
+  if (!nodes || !elements) return "mesh file '" + file + "' has no " + (nodes ? "$Elements" : "$Nodes") + " section: the file is truncated or not a mesh";
+  if (!s.tetrahedra) return "mesh file '" + file + "' has no tetrahedra (element type 4): fsi_app solves on 3-D tetrahedral meshes";
+  return "";
+}
+
+} // namespace fsi

@@ -1,0 +1,18 @@
+/* A pass over a gmsh file before PETSc reads it. PETSc 3.18's reader trusts the file: an element
+   that names a node or a block that names an entity the file does not define is a segfault
+   there, or a mesh with other cells on another number of ranks; a NaN coordinate is read as
+   it is; a truncated file is "Insufficient data" without the file's name. */
+#pragma once
+
+#include <string>
+
+namespace fsi {
+
+/* Why `file` cannot be the mesh, as a sentence that names the file and the line; "" if it can.
+   It can if it is gmsh format 4.1 ASCII (what scripts/make-meshes writes; PETSc 3.18 mislabels
+   the faces of 2.2 files), its node blocks give distinct tags and finite coordinates, its
+   element blocks hold linear tetrahedra, triangles, lines or points that name nodes of $Nodes,
+   every block names an entity of $Entities, it has a tetrahedron, and no section is cut off. */
+std::string GmshFileProblem(const std::string &file);
+
+} // namespace fsi
