@@ -1,7 +1,9 @@
 static const char help[] = "Exercises PCGDSW's API on a nonsymmetric problem: upwind convection-diffusion\n"
                            "-Laplace(u) + beta (1, 1/2) . grad(u) = 1 on the unit square, zero on its boundary, n x n interior nodes.\n"
                            "  -case transpose  <P^T x, y> = <x, P y> for random x, y; GMRES with KSPSolve and KSPSolveTranspose\n"
-                           "  -case setters    a solve, then PCGDSWSet*() changes overlap, combination and first level, and a second solve\n"
+                           "  -case setters    a solve, then the setter named by -set changes its parameter, and a second solve\n"
+                           "  -set <overlap>   subdomains (4 per rank), subdomain_size (200), overlap (2), coarse_space (none),\n"
+                           "                   combination (multiplicative) or first_level_type (restricted)\n"
                            "  -n <32> -beta <20>  grid and wind speed\n"
                            "  -rounds <1>      run the case this many times, each between its own PetscInitialize() and PetscFinalize()\n"
                            "Every case prints the PC's settings as its getters return them.\n";
@@ -142,6 +144,24 @@ static PetscErrorCode CheckAdjoint(PC pc, Mat A)
   PetscFunctionReturn(0);
 }
 
+/* The setter -set names, with a value other than the default. */
+static PetscErrorCode ChangeOne(PC pc)
+{
+  char name[64] = "overlap";
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-set", name, sizeof(name), nullptr));
+  const std::string what = name;
+  if (what == "subdomains") PetscCall(PCGDSWSetSubdomainsPerRank(pc, 4));
+  else if (what == "subdomain_size") PetscCall(PCGDSWSetSubdomainSize(pc, 200));
+  else if (what == "overlap") PetscCall(PCGDSWSetOverlap(pc, 2));
+  else if (what == "coarse_space") PetscCall(PCGDSWSetCoarseSpaceType(pc, PC_GDSW_COARSE_NONE));
+  else if (what == "combination") PetscCall(PCGDSWSetCombinationType(pc, PC_GDSW_MULTIPLICATIVE));
+  else if (what == "first_level_type") PetscCall(PCGDSWSetFirstLevelType(pc, PC_GDSW_FIRST_LEVEL_RESTRICTED));
+  else SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-set %s is not one of the setters listed by -help", name);
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode Run(const std::string &c)
 {
   PetscInt  n    = 32;
@@ -171,9 +191,7 @@ static PetscErrorCode Run(const std::string &c)
     PetscCall(Solve(ksp, PETSC_TRUE, "transpose"));
   } else if (c == "setters") {
     PetscCall(Solve(ksp, PETSC_FALSE, "first"));
-    PetscCall(PCGDSWSetOverlap(pc, 2));
-    PetscCall(PCGDSWSetCombinationType(pc, PC_GDSW_MULTIPLICATIVE));
-    PetscCall(PCGDSWSetFirstLevelType(pc, PC_GDSW_FIRST_LEVEL_RESTRICTED));
+    PetscCall(ChangeOne(pc));
     PetscCall(PrintSettings(pc));
     PetscCall(Solve(ksp, PETSC_FALSE, "second"));
   } else SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-case %s is not one of the cases listed by -help", c.c_str());

@@ -438,7 +438,7 @@ static PetscErrorCode PCView_GDSW(PC pc, PetscViewer viewer)
   if (gd->coarseType == PC_GDSW_COARSE_RGDSW) {
     /* the distance weights are measured between the coordinates the rigid modes are built from */
     if (gd->rgdswWeights == PC_GDSW_RGDSW_WEIGHTS_EQUAL || gd->haveCoords) PetscCall(PetscViewerASCIIPrintf(viewer, "  RGDSW partition of unity: %s\n", PCGDSWRGDSWWeightTypes[gd->rgdswWeights]));
-    else PetscCall(PetscViewerASCIIPrintf(viewer, "  RGDSW partition of unity: equal (distance weights need the rigid modes built from PCSetCoordinates(), not a near-null space)\n"));
+    else PetscCall(PetscViewerASCIIPrintf(viewer, "  RGDSW partition of unity: equal (the distance weights need PCSetCoordinates() as the source of the null space)\n"));
   }
   if (gd->coarseType != PC_GDSW_COARSE_NONE && !gd->coarseActive) PetscCall(PetscViewerASCIIPrintf(viewer, "  no interface, hence no coarse level\n"));
   if (gd->coarseActive) {
