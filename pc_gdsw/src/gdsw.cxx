@@ -1,7 +1,8 @@
 /* PCGDSW: two-level overlapping Schwarz with the GDSW coarse space (Dohrmann, Klawonn,
    Widlund 2008; Heinlein, Klawonn, Rheinbach 2015, eq. 1):
        M^{-1} = Phi (Phi^T A Phi)^{-1} Phi^T + sum_i R_i^T A_i^{-1} R_i.
-   This file holds the PC object: options, the order of the setup modules, apply and view. */
+   This file holds the PC object: options, the order of the setup modules, apply and its
+   transpose, view, and the public functions with their manual pages. */
 #include "gdswimpl.h"
 #include <string>
 
