@@ -366,7 +366,7 @@ def bad_options():
     for opts, msg in ((["-pc_gdsw_overlap", -1], "-pc_gdsw_overlap -1 is out of range"),
                       (["-pc_gdsw_subdomains", 0], "-pc_gdsw_subdomains 0 is out of range"),
                       (["-pc_gdsw_subdomain_size", 0], "-pc_gdsw_subdomain_size 0 is out of range"),
-                      (["-pc_gdsw_coarse_space", "fancy"], "Unknown option fancy for -pc_gdsw_coarse_space")):
+                      (["-pc_gdsw_coarse_space", "fancy"], "-pc_gdsw_coarse_space fancy is not one of: gdsw, rgdsw, none")):
         out = run([ELASTICITY, "-n", 4] + opts, 2, fail=True)
         assert msg in out, msg
     out = run([EX71, "-pde_type", "Elasticity", "-dim", 3, "-cells", "3,3,3", "-dll_append", LIB, "-pc_type", "gdsw",
@@ -380,6 +380,255 @@ def empty_subdomain():
     for np in (1, 2):
         out = run([BAD_INPUT, "-case", "empty_subdomain", "-ksp_type", "cg", "-ksp_rtol", "1e-8"], np)
         between(int(re.search(r"iterations (\d+)", out).group(1)), 1, 10, "iterations")
+
+
+# ---- the API, the transpose, and documented features (tests/gdsw_api.cxx, elasticity options) ----
+API = os.path.join(BUILD, "tests", "gdsw_api")
+
+
+def api_lines(*opts, np=1):
+    """gdsw_api's lines as {first word: {key: value}} (the last of each kind)."""
+    out = run([API] + list(opts), np)
+    lines = {}
+    for line in out.splitlines():
+        w = line.replace(":", "").split()
+        if w and w[0] in ("settings", "adjoint", "forward", "transpose", "first", "second"):
+            lines[w[0]] = {w[i]: w[i + 1] for i in range(1, len(w) - 1, 2)} if w[0] != "adjoint" else \
+                {"error": float(w[4]), "asymmetry": float(w[6])}
+    return lines
+
+
+@case
+def api_transpose():
+    """PCApplyTranspose is the transpose of PCApply: <P^T x, y> = <x, P y> to round-off (< 1e-13
+    relative; measured ~3e-17) for random x, y on upwind convection-diffusion (P itself is far
+    from symmetric, |P^T x - P x| / |P x| > 0.1, so the identity is not trivial), for every coarse
+    space, combination and first level. GMRES (right preconditioning, rtol 1e-8) converges with
+    KSPSolveTranspose to a true residual of A^T x = b below 1e-8 within 2 iterations of the forward
+    solve (measured 14-26 both ways), on 1 and 2 ranks."""
+    for np in (1, 2):
+        for space in ("gdsw", "rgdsw", "none"):
+            for comb in ("additive", "multiplicative"):
+                for first in ("additive", "restricted"):
+                    r = api_lines("-case", "transpose", "-pc_gdsw_subdomains", 4, "-pc_gdsw_coarse_space", space,
+                                  "-pc_gdsw_combination", comb, "-pc_gdsw_first_level_type", first, np=np)
+                    what = f"{space} {comb} {first}, {np} ranks"
+                    between(r["adjoint"]["error"], 0, 1e-13, f"<P^T x, y> - <x, P y>, {what}")
+                    assert r["adjoint"]["asymmetry"] > 0.1, r
+                    f, t = r["forward"], r["transpose"]
+                    for s in (f, t):
+                        assert s["reason"].startswith("CONVERGED"), (what, s)
+                        between(float(s["residual"]), 0, 1e-8, f"true relative residual, {what}")
+                    between(int(t["iterations"]), int(f["iterations"]) - 2, int(f["iterations"]) + 2, f"transposed GMRES iterations, {what}")
+                    between(int(f["iterations"]), 5, 30, f"GMRES iterations, {what}")
+
+
+@case
+def rgdsw_split_faces():
+    """METIS cuts of the 5-point graph leave faces in several pieces with the same two
+    subdomains. Each piece is its own RGDSW coarse node: with 2 subdomains RGDSW is then GDSW
+    (one constant per piece: the same coarse dimension and iterations), and with 2-8 subdomains
+    on 1 and 2 ranks A_0 is nonsingular and GMRES converges (taking in each other's nodes, two
+    pieces had equal columns and A_0 could not be factored)."""
+    rg, gd = (api_lines("-case", "transpose", "-pc_gdsw_subdomains", 2, "-pc_gdsw_coarse_space", c)["forward"] for c in ("rgdsw", "gdsw"))
+    assert (rg["coarse"], rg["iterations"]) == (gd["coarse"], gd["iterations"]), (rg, gd)
+    assert int(rg["coarse"]) > 1, rg
+    for np in (1, 2):
+        for n in (3, 5, 8):
+            r = api_lines("-case", "transpose", "-pc_gdsw_subdomains", n, "-pc_gdsw_coarse_space", "rgdsw", np=np)["forward"]
+            between(int(r["iterations"]), 5, 30, f"RGDSW GMRES iterations, {n} METIS subdomains per rank, {np} ranks")
+
+
+@case
+def api_setters_reset():
+    """Each setter that changes the decomposition, the coarse space or the combination, called
+    after a solve, makes the next solve rebuild the PC: it equals a fresh run with the option
+    (iterations, overlapping dofs, coarse dimension) and differs from the first solve (2 ranks,
+    default size rule: one subdomain per rank)."""
+    for name, value in (("subdomains", 4), ("subdomain_size", 200), ("overlap", 2), ("coarse_space", "none"),
+                        ("combination", "multiplicative"), ("first_level_type", "restricted")):
+        r = api_lines("-case", "setters", "-set", name, np=2)
+        fresh = api_lines("-case", "transpose", f"-pc_gdsw_{name}", value, np=2)["forward"]
+        keys = ("iterations", "overlap_dofs", "coarse")
+        assert [r["second"][k] for k in keys] == [fresh[k] for k in keys], (name, r["second"], fresh)
+        assert [r["second"][k] for k in keys] != [r["first"][k] for k in keys], (name, r)
+        assert r["settings"][name] == str(value), (name, r["settings"])
+
+
+@case
+def api_getters():
+    """Every -pc_gdsw_* option reaches its setter: the getters return what the options say."""
+    opts = {"subdomains": 3, "subdomain_size": 500, "overlap": 2, "coarse_space": "rgdsw", "rgdsw_weights": "equal",
+            "rotations": 0, "combination": "multiplicative", "first_level_type": "restricted", "reuse_coarse_basis": 1}
+    args = []
+    for k, v in opts.items():
+        args += [f"-pc_gdsw_{k}", v]
+    got = api_lines("-case", "transpose", *args)["settings"]
+    assert got == {k: str(v) for k, v in opts.items()}, got
+
+
+@case
+def api_petsc_reinit():
+    """PetscInitialize/PetscFinalize twice in one program (MPI initialized by the program): gdsw
+    is registered again after PetscFinalize emptied PETSc's list of PC types, and the second
+    round prints what the first printed."""
+    out = run([API, "-rounds", 2, "-pc_gdsw_subdomains", 4], 2)
+    rounds = [line for line in out.splitlines() if line.startswith(("adjoint", "forward", "transpose"))]
+    assert len(rounds) == 6 and rounds[:3] == rounds[3:], rounds
+
+
+def subdomain_dofs(*opts, np=1):
+    """(iterations, nonoverlapping dofs, overlapping dofs) of the elasticity driver."""
+    out = run([ELASTICITY, "-report_subdomains"] + [str(o) for o in opts], np)
+    its = int(re.search(r"iterations (\d+) reason CONVERGED", out).group(1))
+    m = re.search(r"subdomains \d+ nonoverlapping dofs (\d+) overlapping dofs (\d+)", out)
+    return its, int(m.group(1)), int(m.group(2))
+
+
+def box_dofs(n, b, k, dim=3):
+    """Dofs of all b^dim element boxes of an n^dim mesh, each grown by k element layers (clipped):
+    the product of the 1D node counts, dim dofs per node."""
+    s = sum(min(n, (q + 1) * n // b + k) - max(0, q * n // b - k) + 1 for q in range(b))
+    return dim * s ** dim
+
+
+@case
+def given_overlap_sets():
+    """PCGDSWSetSubdomains with overlapping sets (-box_overlap k: each box grown by k element
+    layers) equals -pc_gdsw_overlap k (k layers of the Q1 graph are k element layers): the same
+    overlapping dofs, closed form (3 * sum_q |box_q grown by k|_1D ^ 3: 20577 and 36501 on 3^3
+    boxes of 12^3 elements), and the same iterations, on 1 and 2 ranks; given sets take
+    precedence over -pc_gdsw_overlap."""
+    n, b = 12, 3
+    for np in (1, 2):
+        for k in (0, 1, 2):
+            graph = subdomain_dofs("-n", n, "-boxes", b, "-pc_gdsw_overlap", k, np=np)
+            given = subdomain_dofs("-n", n, "-boxes", b, "-box_overlap", k, np=np)
+            assert graph == given == (graph[0], box_dofs(n, b, 0), box_dofs(n, b, k)), (k, graph, given)
+        assert subdomain_dofs("-n", n, "-boxes", b, "-box_overlap", 1, "-pc_gdsw_overlap", 2, np=np)[2] == box_dofs(n, b, 1)
+
+
+@case
+def overlap_two():
+    """-pc_gdsw_overlap 2 against 1 with H/h = 8 (2^3 boxes of 16^3 elements, 2 ranks): no more
+    iterations (measured 26 -> 24) and the overlapping dofs of the boxes grown by 1 and 2 element
+    layers (24000, 31944). With H/h = 4 the second layer reaches across half a box, nodes lie in
+    up to 27 overlapping subdomains instead of 8, and the additive method takes more iterations
+    (25 -> 36 on 3^3 boxes of 12^3; docs/gdsw.md)."""
+    n, b = 16, 2
+    one = subdomain_dofs("-n", n, "-boxes", b, "-pc_gdsw_overlap", 1, np=2)
+    two = subdomain_dofs("-n", n, "-boxes", b, "-pc_gdsw_overlap", 2, np=2)
+    assert (one[2], two[2]) == (box_dofs(n, b, 1), box_dofs(n, b, 2)), (one, two)
+    assert two[0] <= one[0], (one, two)
+
+
+def check_coarse(*opts, np=1):
+    out = run([ELASTICITY, "-check_coarse"] + [str(o) for o in opts], np)
+    m = re.search(r"coarse operator (\d+) x (\d+) relative difference to Phi\^T A Phi (\S+); coarse solver prefix (\S+) ksp (\S+) pc (\S+) operator (\S+)", out)
+    assert m, "no coarse operator line"
+    return out, m
+
+
+@case
+def coarse_operator():
+    """PCGDSWGetCoarseOperator is Phi^T A Phi (against MatTransposeMatMult(Phi, A Phi), relative
+    difference < 1e-12) of the coarse dimension (105 on 2^3 boxes; RGDSW: 6 for the one interior
+    vertex), and PCGDSWGetCoarseKSP's operator, on 1 and 2 ranks."""
+    for np in (1, 2):
+        for opts, dim in ((["-n", 8, "-boxes", 2], BOXES[2][0]),
+                          (["-n", 8, "-boxes", 2, "-nullspace", "coords", "-pc_gdsw_coarse_space", "rgdsw"], 6)):
+            _, m = check_coarse(*opts, np=np)
+            assert (int(m.group(1)), int(m.group(2))) == (dim, dim), m.group(0)
+            between(float(m.group(3)), 0, 1e-12, "|A0 - Phi^T A Phi| / |Phi^T A Phi|")
+            assert (m.group(4), m.group(7)) == ("pc_gdsw_coarse_", "A0"), m.group(0)
+
+
+@case
+def coarse_prefix():
+    """-pc_gdsw_coarse_ksp_type cg -pc_gdsw_coarse_pc_type jacobi reach the coarse KSP: in
+    -ksp_view under the coarse solver, and through PCGDSWGetCoarseKSP; solved to 1e-12 the coarse
+    problem gives the direct solver's outer iterations within one."""
+    ref = elasticity("-n", 8, "-boxes", 2, np=2)["iterations"]
+    out, m = check_coarse("-n", 8, "-boxes", 2, "-pc_gdsw_coarse_ksp_type", "cg", "-pc_gdsw_coarse_pc_type", "jacobi",
+                          "-pc_gdsw_coarse_ksp_rtol", "1e-12", "-ksp_view", np=2)
+    assert (m.group(5), m.group(6)) == ("cg", "jacobi"), m.group(0)
+    coarse = out[out.index("coarse solver (prefix -pc_gdsw_coarse_)"):]
+    assert re.search(r"KSP Object: \(pc_gdsw_coarse_\).*\n\s+type: cg", coarse), "coarse KSP type not in -ksp_view"
+    assert re.search(r"PC Object: \(pc_gdsw_coarse_\).*\n\s+type: jacobi", coarse), "coarse PC type not in -ksp_view"
+    its = int(re.search(r"iterations (\d+) reason CONVERGED", out).group(1))
+    between(its, ref - 1, ref + 1, "outer CG iterations with an iterative coarse solve")
+
+
+@case
+def elasticity_2d():
+    """Plane-strain Q1 elasticity on b^2 boxes of the unit square (H/h = 4), clamped at x = 0:
+    2b(b-1) interface edges (reported as faces: two subdomains) and (b-1)^2 vertices; GDSW takes
+    the three rigid modes on each edge and two on each vertex (a rotation about a single node is
+    a translation there): 14 / 44 / 90, from the near-null space and from PCSetCoordinates alike;
+    without rotations 2 per component; RGDSW 3 per interior
+    vertex. On a floating square Phi reproduces the three rigid modes to round-off with the
+    rotations, not without. Iterations flat from 4 to 16 subdomains, the same on 1 and 2 ranks."""
+    its = {}
+    for b in (2, 3, 4):
+        faces, vertices = 2 * b * (b - 1), (b - 1) ** 2
+        for np in (1, 2):
+            r = elasticity("-dim", 2, "-n", 4 * b, "-boxes", b, np=np)
+            assert (r["coarse"], r["faces"], r["edges"], r["vertices"]) == (3 * faces + 2 * vertices, faces, 0, vertices), r
+            its[b, np] = r["iterations"]
+        assert its[b, 1] == its[b, 2], its
+        assert elasticity("-dim", 2, "-n", 4 * b, "-boxes", b, "-nullspace", "coords")["coarse"] == 3 * faces + 2 * vertices
+        assert elasticity("-dim", 2, "-n", 4 * b, "-boxes", b, "-pc_gdsw_rotations", 0)["coarse"] == 2 * (faces + vertices)
+        assert elasticity("-dim", 2, "-n", 4 * b, "-boxes", b, "-pc_gdsw_coarse_space", "rgdsw")["coarse"] == 3 * vertices
+    assert its[4, 1] <= 1.15 * its[2, 1], its
+    between(its[4, 1], 10, 25, "GDSW CG iterations, 2D, 16 boxes")
+    for rot, lo, hi in ((1, 0, 1e-10), (0, 1e-2, 10)):
+        out = run([ELASTICITY, "-dim", 2, "-n", 12, "-boxes", 3, "-floating", "-check_phi", "-pc_gdsw_rotations", rot, "-ksp_max_it", 2000])
+        between(float(re.search(r"max relative error (\S+)", out).group(1)), lo, hi, f"2D rigid-mode reproduction error, rotations {rot}")
+
+
+@case
+def rgdsw_fallback():
+    """RGDSW's distance weights need the node coordinates as the source of the null space
+    (PCSetCoordinates, no near-null space). With the near-null space instead, or with no null
+    space at all, RGDSW uses equal shares: -ksp_view says so, and the iterations equal those of
+    -pc_gdsw_rgdsw_weights equal (27 on 3^3 boxes), where coordinates with distance weights take
+    26. Without any null space the coarse space is the translations: 3 per interior vertex."""
+    base = ["-n", 12, "-boxes", 3, "-pc_gdsw_coarse_space", "rgdsw", "-ksp_view"]
+    fallback = "RGDSW partition of unity: equal (the distance weights need PCSetCoordinates() as the source of the null space)"
+    its = {}
+    for ns in ("near", "coords", "none"):
+        for w in ("equal", "distance"):
+            out = run([ELASTICITY] + base + ["-nullspace", ns, "-pc_gdsw_rgdsw_weights", w])
+            its[ns, w] = int(re.search(r"iterations (\d+) reason CONVERGED", out).group(1))
+            coarse = int(re.search(r" coarse (\d+) faces", out).group(1))
+            assert coarse == 8 * (3 if ns == "none" else 6), (ns, coarse)
+            expected = fallback if w == "distance" and ns != "coords" else f"RGDSW partition of unity: {w}\n"
+            assert expected in out, (ns, w, expected)
+    print(its)
+    assert its["near", "distance"] == its["near", "equal"] and its["none", "distance"] == its["none", "equal"], its
+    assert its["coords", "distance"] < its["coords", "equal"], its
+
+
+@case
+def bad_option_values():
+    """A malformed or out-of-range value of every -pc_gdsw_* option on 2 ranks: exit status
+    nonzero, one message (printed once) that names the option and what it takes."""
+    for opt, value, msg in (("subdomains", "two", "is not an integer: give the number of subdomains per MPI rank, at least 1, or -1"),
+                            ("subdomains", 0, "is out of range: give the number of subdomains per MPI rank"),
+                            ("subdomain_size", 1.5, "is not an integer: give the target number of dofs per subdomain, at least 1"),
+                            ("subdomain_size", -3, "is out of range: give the target number of dofs per subdomain, at least 1"),
+                            ("overlap", "x", "is not an integer: give the number of layers, 0 or more"),
+                            ("overlap", -1, "is out of range: give the number of layers, 0 or more"),
+                            ("coarse_space", "fancy", "is not one of: gdsw, rgdsw, none"),
+                            ("rgdsw_weights", "far", "is not one of: equal, distance"),
+                            ("combination", "both", "is not one of: additive, multiplicative"),
+                            ("first_level_type", "ras", "is not one of: additive, restricted"),
+                            ("rotations", "maybe", "is not true or false"),
+                            ("reuse_coarse_basis", 2, "is not true or false")):
+        out = run([ELASTICITY, "-n", 4, f"-pc_gdsw_{opt}", value], 2, fail=True)
+        full = f"PCGDSW: -pc_gdsw_{opt} {value} {msg}"
+        assert full in out, f"missing: {full!r}"
+        assert out.count("PCGDSW:") == 1, f"-pc_gdsw_{opt}: the message is printed {out.count('PCGDSW:')} times"
 
 
 if __name__ == "__main__":

@@ -1,15 +1,19 @@
-static const char help[] = "Q1 linear elasticity on the unit cube, clamped at x = 0, under gravity,\n"
+static const char help[] = "Q1 linear elasticity on the unit cube (or square: plane strain), clamped at x = 0, under gravity,\n"
                            "solved with any PETSc KSP/PC; with -pc_type gdsw it can hand the PC an element-based box\n"
                            "decomposition. Prints one summary line: iterations, coarse dimension, times.\n"
                            "Options:\n"
+                           "  -dim <3>           2 or 3\n"
                            "  -n <8>             elements per direction\n"
-                           "  -boxes <0>         give the PC b x b x b element boxes as subdomains (0: let the PC decide)\n"
+                           "  -boxes <0>         give the PC b^dim element boxes as subdomains (0: let the PC decide)\n"
+                           "  -box_overlap <-1>  give each box's overlapping subdomain too: the box grown by this many element layers (-1: none)\n"
                            "  -E <1> -nu <0.3>   Young's modulus and Poisson ratio\n"
                            "  -jump <1>          Young's modulus of every other box (checkerboard of -jump_boxes boxes)\n"
                            "  -jump_boxes <2>    boxes per direction of the coefficient checkerboard\n"
                            "  -nullspace <near>  near: MatSetNearNullSpace(rigid modes); coords: PCSetCoordinates; none\n"
                            "  -floating          no Dirichlet condition (the null space is attached to the operator)\n"
                            "  -check_phi         report how well the coarse basis reproduces the rigid-body modes\n"
+                           "  -check_coarse      compare the coarse operator with Phi^T (A Phi) and report the coarse solver (AIJ only)\n"
+                           "  -report_subdomains report the dofs of all nonoverlapping and of all overlapping subdomains\n"
                            "  -resolve_jump <0>  then reassemble with this -jump (same pattern) and solve again\n"
                            "  -mat_type <aij>    any assembled type (aij, baij, sbaij), or is (MATIS: each rank's element layers are its subdomain, for PCBDDC)\n";
 
@@ -18,66 +22,69 @@ static const char help[] = "Q1 linear elasticity on the unit cube, clamped at x 
 #include <vector>
 
 struct Problem {
-  PetscInt  n = 8, boxes = 0, jumpBoxes = 2;
+  PetscInt  dim = 3, n = 8, boxes = 0, boxOverlap = -1, jumpBoxes = 2;
   PetscReal E = 1.0, nu = 0.3, jump = 1.0;
   PetscBool floating = PETSC_FALSE;
-  PetscInt  k0, k1; /* node layers (z) owned by this rank */
+  PetscInt  k0, k1; /* node layers of the last coordinate (z in 3D, y in 2D) owned by this rank */
 };
 
+/* Nodes are numbered i + (n+1) (j + (n+1) k), k = 0 in 2D: a layer of the last coordinate is contiguous. */
 static PetscInt Node(const Problem &p, PetscInt i, PetscInt j, PetscInt k) { return i + (p.n + 1) * (j + (p.n + 1) * k); }
+static PetscInt LayerSize(const Problem &p) { return p.dim == 3 ? (p.n + 1) * (p.n + 1) : p.n + 1; }
 
-/* Stiffness of the reference cube [0,h]^3 for unit E: 2x2x2 Gauss, exact for Q1. */
-static void ElementStiffness(PetscReal h, PetscReal nu, PetscReal K[24][24])
+/* Stiffness of the reference element [0,h]^dim for unit E (plane strain in 2D): 2^dim-point
+   Gauss, exact for Q1. Dofs node by node: row dim * a + i for component i of corner a. */
+static std::vector<PetscReal> ElementStiffness(PetscInt dim, PetscReal h, PetscReal nu)
 {
   const PetscReal lam = nu / ((1 + nu) * (1 - 2 * nu)), mu = 1.0 / (2 * (1 + nu));
-  const PetscReal g = 1.0 / std::sqrt(3.0);
-  for (int a = 0; a < 24; a++)
-    for (int b = 0; b < 24; b++) K[a][b] = 0;
-  for (int q = 0; q < 8; q++) {
-    const PetscReal xi[3] = {(q & 1) ? g : -g, (q & 2) ? g : -g, (q & 4) ? g : -g};
-    PetscReal       dN[8][3];
-    for (int a = 0; a < 8; a++) {
-      const PetscReal s[3] = {(a & 1) ? 1.0 : -1.0, (a & 2) ? 1.0 : -1.0, (a & 4) ? 1.0 : -1.0};
-      for (int d = 0; d < 3; d++) {
-        PetscReal v = s[d] / 8.0;
-        for (int e = 0; e < 3; e++)
-          if (e != d) v *= 1 + s[e] * xi[e];
+  const PetscReal g = 1.0 / std::sqrt(3.0), w = std::pow(h / 2, dim);
+  const PetscInt  nen = 1 << dim, ne = dim * nen;
+  std::vector<PetscReal> K(ne * ne, 0.0);
+  for (PetscInt q = 0; q < nen; q++) {
+    PetscReal xi[3], dN[8][3];
+    for (PetscInt d = 0; d < dim; d++) xi[d] = (q >> d & 1) ? g : -g;
+    for (PetscInt a = 0; a < nen; a++)
+      for (PetscInt d = 0; d < dim; d++) {
+        PetscReal v = ((a >> d & 1) ? 1.0 : -1.0) / nen;
+        for (PetscInt e = 0; e < dim; e++)
+          if (e != d) v *= 1 + ((a >> e & 1) ? 1.0 : -1.0) * xi[e];
         dN[a][d] = v * 2.0 / h;
       }
-    }
-    const PetscReal w = h * h * h / 8.0;
-    for (int a = 0; a < 8; a++)
-      for (int b = 0; b < 8; b++) {
+    for (PetscInt a = 0; a < nen; a++)
+      for (PetscInt b = 0; b < nen; b++) {
         PetscReal dot = 0;
-        for (int d = 0; d < 3; d++) dot += dN[a][d] * dN[b][d];
-        for (int i = 0; i < 3; i++)
-          for (int j = 0; j < 3; j++) K[3 * a + i][3 * b + j] += w * (lam * dN[a][i] * dN[b][j] + mu * dN[a][j] * dN[b][i] + (i == j ? mu * dot : 0));
+        for (PetscInt d = 0; d < dim; d++) dot += dN[a][d] * dN[b][d];
+        for (PetscInt i = 0; i < dim; i++)
+          for (PetscInt j = 0; j < dim; j++) K[(dim * a + i) * ne + dim * b + j] += w * (lam * dN[a][i] * dN[b][j] + mu * dN[a][j] * dN[b][i] + (i == j ? mu * dot : 0));
       }
   }
+  return K;
 }
 
 static PetscErrorCode Assemble(const Problem &p, Mat A, Vec b)
 {
-  const PetscReal h = 1.0 / p.n;
-  PetscReal       K[24][24], Ke[24 * 24], fe[24];
+  const PetscReal              h = 1.0 / p.n;
+  const PetscInt               nen = 1 << p.dim, ne = p.dim * nen;
+  const std::vector<PetscReal> K = ElementStiffness(p.dim, h, p.nu);
+  std::vector<PetscReal>       Ke(ne * ne), fe(ne);
+  std::vector<PetscInt>        rows(ne);
 
   PetscFunctionBegin;
-  ElementStiffness(h, p.nu, K);
   const PetscInt kEnd = std::min(p.k1, p.n); /* element layers whose lower nodes this rank owns */
   for (PetscInt k = p.k0; k < kEnd; k++)
-    for (PetscInt j = 0; j < p.n; j++)
+    for (PetscInt j = 0; j < (p.dim == 3 ? p.n : 1); j++)
       for (PetscInt i = 0; i < p.n; i++) {
-        const PetscInt c = p.jumpBoxes * i / p.n + p.jumpBoxes * j / p.n + p.jumpBoxes * k / p.n;
+        const PetscInt e[3] = {i, p.dim == 3 ? j : k, p.dim == 3 ? k : 0}; /* the element's lowest corner */
+        PetscInt       c    = 0;
+        for (PetscInt d = 0; d < p.dim; d++) c += p.jumpBoxes * e[d] / p.n;
         const PetscReal E = p.E * (c % 2 ? p.jump : 1.0);
-        PetscInt        rows[24];
-        for (int a = 0; a < 8; a++) {
-          const PetscInt nd = Node(p, i + (a & 1), j + ((a >> 1) & 1), k + ((a >> 2) & 1));
-          for (int d = 0; d < 3; d++) rows[3 * a + d] = 3 * nd + d, fe[3 * a + d] = d == 2 ? -h * h * h / 8.0 : 0.0;
+        for (PetscInt a = 0; a < nen; a++) {
+          const PetscInt nd = Node(p, e[0] + (a & 1), e[1] + (a >> 1 & 1), e[2] + (a >> 2 & 1));
+          for (PetscInt d = 0; d < p.dim; d++) rows[p.dim * a + d] = p.dim * nd + d, fe[p.dim * a + d] = d == p.dim - 1 ? -std::pow(h, p.dim) / nen : 0.0;
         }
-        for (int r = 0; r < 24; r++)
-          for (int s = 0; s < 24; s++) Ke[24 * r + s] = E * K[r][s];
-        PetscCall(MatSetValues(A, 24, rows, 24, rows, Ke, ADD_VALUES));
-        PetscCall(VecSetValues(b, 24, rows, fe, ADD_VALUES));
+        for (PetscInt r = 0; r < ne * ne; r++) Ke[r] = E * K[r];
+        PetscCall(MatSetValues(A, ne, rows.data(), ne, rows.data(), Ke.data(), ADD_VALUES));
+        PetscCall(VecSetValues(b, ne, rows.data(), fe.data(), ADD_VALUES));
       }
   PetscCall(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
@@ -95,12 +102,12 @@ static PetscErrorCode SubassembledLayout(const Problem &p, Mat A)
   PetscFunctionBegin;
   PetscCall(PetscObjectTypeCompare((PetscObject)A, MATIS, &isIS));
   if (!isIS) PetscFunctionReturn(0);
-  const PetscInt        kEnd = std::min(p.k1, p.n), plane = (p.n + 1) * (p.n + 1);
+  const PetscInt        kEnd = std::min(p.k1, p.n), layer = LayerSize(p);
   std::vector<PetscInt> nodes;
   for (PetscInt k = p.k0; p.k0 < kEnd && k <= kEnd; k++) /* a rank without elements holds no nodes */
-    for (PetscInt q = 0; q < plane; q++) nodes.push_back(k * plane + q);
+    for (PetscInt q = 0; q < layer; q++) nodes.push_back(k * layer + q);
   ISLocalToGlobalMapping l2g;
-  PetscCall(ISLocalToGlobalMappingCreate(PETSC_COMM_WORLD, 3, (PetscInt)nodes.size(), nodes.data(), PETSC_COPY_VALUES, &l2g));
+  PetscCall(ISLocalToGlobalMappingCreate(PETSC_COMM_WORLD, p.dim, (PetscInt)nodes.size(), nodes.data(), PETSC_COPY_VALUES, &l2g));
   PetscCall(MatSetLocalToGlobalMapping(A, l2g, l2g));
   PetscCall(ISLocalToGlobalMappingDestroy(&l2g));
   PetscCall(MatISSetPreallocation(A, 81, nullptr, 0, nullptr));
@@ -116,33 +123,49 @@ static PetscErrorCode Constrain(const Problem &p, Mat A, Vec b, Vec x, MatNullSp
     PetscFunctionReturn(0);
   }
   std::vector<PetscInt> rows;
-  for (PetscInt k = p.k0; k < p.k1; k++)
-    for (PetscInt j = 0; j <= p.n; j++)
-      for (int d = 0; d < 3; d++) rows.push_back(3 * Node(p, 0, j, k) + d);
+  for (PetscInt q = p.k0 * LayerSize(p); q < p.k1 * LayerSize(p); q++)
+    if (q % (p.n + 1) == 0)
+      for (PetscInt d = 0; d < p.dim; d++) rows.push_back(p.dim * q + d);
   PetscCall(VecSet(x, 0.0));
   PetscCall(MatZeroRowsColumns(A, (PetscInt)rows.size(), rows.data(), 1.0, x, b));
   PetscFunctionReturn(0);
 }
 
-/* Element boxes b x b x b, dealt to ranks in order: the closure of each box's cells. */
-static PetscErrorCode BoxSubdomains(const Problem &p, std::vector<IS> &boxes)
+/* Nodes of element box q (boxes numbered along x first), grown by `grow` element layers and clipped to the domain. */
+static std::vector<PetscInt> BoxNodes(const Problem &p, PetscInt q, PetscInt grow)
+{
+  PetscInt              lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  std::vector<PetscInt> nodes;
+  for (PetscInt d = 0, r = q; d < p.dim; d++, r /= p.boxes) {
+    const PetscInt b = r % p.boxes;
+    lo[d] = std::max<PetscInt>(0, b * p.n / p.boxes - grow), hi[d] = std::min(p.n, (b + 1) * p.n / p.boxes + grow);
+  }
+  for (PetscInt k = lo[2]; k <= hi[2]; k++)
+    for (PetscInt j = lo[1]; j <= hi[1]; j++)
+      for (PetscInt i = lo[0]; i <= hi[0]; i++) nodes.push_back(Node(p, i, j, k));
+  return nodes;
+}
+
+/* Element boxes, dealt to ranks in order: the closure of each box's cells, and with -box_overlap
+   the box grown by that many element layers as its overlapping subdomain. */
+static PetscErrorCode BoxSubdomains(const Problem &p, std::vector<IS> &boxes, std::vector<IS> &grown)
 {
   PetscMPIInt rank, size;
 
   PetscFunctionBegin;
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
   PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
-  const PetscInt nb = p.boxes * p.boxes * p.boxes;
+  const PetscInt nb = p.dim == 3 ? p.boxes * p.boxes * p.boxes : p.boxes * p.boxes;
+  auto add = [&](PetscInt q, PetscInt grow, std::vector<IS> &list) {
+    const std::vector<PetscInt> nodes = BoxNodes(p, q, grow);
+    IS                          is;
+    PetscCall(ISCreateBlock(PETSC_COMM_SELF, p.dim, (PetscInt)nodes.size(), nodes.data(), PETSC_COPY_VALUES, &is));
+    list.push_back(is);
+    return PetscErrorCode(0);
+  };
   for (PetscInt q = nb * rank / size; q < nb * (rank + 1) / size; q++) {
-    const PetscInt bi = q % p.boxes, bj = (q / p.boxes) % p.boxes, bk = q / (p.boxes * p.boxes);
-    auto lo = [&](PetscInt b) { return b * p.n / p.boxes; };
-    std::vector<PetscInt> nodes;
-    for (PetscInt k = lo(bk); k <= lo(bk + 1); k++)
-      for (PetscInt j = lo(bj); j <= lo(bj + 1); j++)
-        for (PetscInt i = lo(bi); i <= lo(bi + 1); i++) nodes.push_back(Node(p, i, j, k));
-    IS is;
-    PetscCall(ISCreateBlock(PETSC_COMM_SELF, 3, (PetscInt)nodes.size(), nodes.data(), PETSC_COPY_VALUES, &is));
-    boxes.push_back(is);
+    PetscCall(add(q, 0, boxes));
+    if (p.boxOverlap >= 0) PetscCall(add(q, p.boxOverlap, grown));
   }
   PetscFunctionReturn(0);
 }
@@ -187,6 +210,61 @@ static PetscErrorCode CheckPhi(PC pc, MatNullSpace rigid)
   PetscFunctionReturn(0);
 }
 
+/* The coarse operator against an independent product Phi^T (A Phi), and the coarse solver as the
+   options made it. */
+static PetscErrorCode CheckCoarse(PC pc, Mat A)
+{
+  Mat         Phi, A0, AP, PtAP, K;
+  KSP         ksp;
+  PC          kpc;
+  KSPType     ktype;
+  PCType      ptype;
+  const char *prefix;
+  PetscInt    m, n;
+  PetscReal   diff, norm;
+
+  PetscFunctionBegin;
+  PetscCall(PCGDSWGetCoarseBasis(pc, &Phi));
+  PetscCall(PCGDSWGetCoarseOperator(pc, &A0));
+  PetscCall(PCGDSWGetCoarseKSP(pc, &ksp));
+  PetscCall(MatMatMult(A, Phi, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &AP));
+  PetscCall(MatTransposeMatMult(Phi, AP, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &PtAP));
+  PetscCall(MatNorm(PtAP, NORM_FROBENIUS, &norm));
+  PetscCall(MatAXPY(PtAP, -1.0, A0, DIFFERENT_NONZERO_PATTERN));
+  PetscCall(MatNorm(PtAP, NORM_FROBENIUS, &diff));
+  PetscCall(MatGetSize(A0, &m, &n));
+  PetscCall(KSPGetOperators(ksp, &K, nullptr));
+  PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
+  PetscCall(KSPGetType(ksp, &ktype));
+  PetscCall(KSPGetPC(ksp, &kpc));
+  PetscCall(PCGetType(kpc, &ptype));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "coarse operator %" PetscInt_FMT " x %" PetscInt_FMT " relative difference to Phi^T A Phi %.3e; coarse solver prefix %s ksp %s pc %s operator %s\n", m, n, (double)(diff / norm), prefix, ktype, ptype,
+                        K == A0 ? "A0" : "other"));
+  PetscCall(MatDestroy(&AP));
+  PetscCall(MatDestroy(&PtAP));
+  PetscFunctionReturn(0);
+}
+
+/* The dofs of all nonoverlapping and of all overlapping subdomains, as the PC uses them. */
+static PetscErrorCode ReportSubdomains(PC pc)
+{
+  PetscInt n, local[3] = {0, 0, 0}, total[3];
+  IS      *non, *ovl;
+
+  PetscFunctionBegin;
+  PetscCall(PCGDSWGetSubdomains(pc, &n, &non, &ovl));
+  local[0] = n;
+  for (PetscInt i = 0; i < n; i++) {
+    PetscInt a, b;
+    PetscCall(ISGetLocalSize(non[i], &a));
+    PetscCall(ISGetLocalSize(ovl[i], &b));
+    local[1] += a, local[2] += b;
+  }
+  PetscCallMPI(MPIU_Allreduce(local, total, 3, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "subdomains %" PetscInt_FMT " nonoverlapping dofs %" PetscInt_FMT " overlapping dofs %" PetscInt_FMT "\n", total[0], total[1], total[2]));
+  PetscFunctionReturn(0);
+}
+
 /* One summary line per solve: what the tests and benchmarks read. */
 static PetscErrorCode Report(KSP ksp, Mat A, PetscLogDouble setup, PetscLogDouble solve)
 {
@@ -219,7 +297,7 @@ int main(int argc, char **argv)
   Problem     p;
   PetscMPIInt rank, size;
   char        nsp[16] = "near";
-  PetscBool   checkPhi = PETSC_FALSE;
+  PetscBool   checkPhi = PETSC_FALSE, checkCoarse = PETSC_FALSE, reportSubdomains = PETSC_FALSE;
   PetscReal   resolveJump = 0;
 
   PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
@@ -227,8 +305,10 @@ int main(int argc, char **argv)
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
   PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
   PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "Elasticity test problem", nullptr);
+  PetscCall(PetscOptionsInt("-dim", "2 or 3", nullptr, p.dim, &p.dim, nullptr));
   PetscCall(PetscOptionsInt("-n", "elements per direction", nullptr, p.n, &p.n, nullptr));
   PetscCall(PetscOptionsInt("-boxes", "element boxes per direction given to PCGDSW (0: none)", nullptr, p.boxes, &p.boxes, nullptr));
+  PetscCall(PetscOptionsInt("-box_overlap", "element layers grown around each box for its overlapping subdomain (-1: none given)", nullptr, p.boxOverlap, &p.boxOverlap, nullptr));
   PetscCall(PetscOptionsReal("-E", "Young's modulus", nullptr, p.E, &p.E, nullptr));
   PetscCall(PetscOptionsReal("-nu", "Poisson ratio", nullptr, p.nu, &p.nu, nullptr));
   PetscCall(PetscOptionsReal("-jump", "Young's modulus factor on every other box", nullptr, p.jump, &p.jump, nullptr));
@@ -236,30 +316,33 @@ int main(int argc, char **argv)
   PetscCall(PetscOptionsString("-nullspace", "near, coords or none", nullptr, nsp, nsp, sizeof(nsp), nullptr));
   PetscCall(PetscOptionsBool("-floating", "no Dirichlet condition", nullptr, p.floating, &p.floating, nullptr));
   PetscCall(PetscOptionsBool("-check_phi", "check that Phi reproduces the rigid-body modes", nullptr, checkPhi, &checkPhi, nullptr));
+  PetscCall(PetscOptionsBool("-check_coarse", "compare the coarse operator with Phi^T (A Phi), report the coarse solver", nullptr, checkCoarse, &checkCoarse, nullptr));
+  PetscCall(PetscOptionsBool("-report_subdomains", "report the dofs of the subdomains", nullptr, reportSubdomains, &reportSubdomains, nullptr));
   PetscCall(PetscOptionsReal("-resolve_jump", "reassemble with this jump and solve again (0: no)", nullptr, resolveJump, &resolveJump, nullptr));
   PetscOptionsEnd();
+  PetscCheck(p.dim == 2 || p.dim == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-dim %" PetscInt_FMT ": use 2 or 3", p.dim);
   PetscCheck(p.n >= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-n %" PetscInt_FMT ": need at least one element per direction", p.n);
   PetscCheck(p.boxes >= 0 && p.boxes <= p.n, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-boxes %" PetscInt_FMT ": must be between 0 and -n %" PetscInt_FMT, p.boxes, p.n);
   PetscCheck(!strcmp(nsp, "near") || !strcmp(nsp, "coords") || !strcmp(nsp, "none"), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-nullspace %s: use near, coords or none", nsp);
 
-  /* rows: node layers in z, split evenly over the ranks */
-  const PetscInt layers = p.n + 1, plane = (p.n + 1) * (p.n + 1);
+  /* rows: node layers of the last coordinate, split evenly over the ranks */
+  const PetscInt layers = p.n + 1, layer = LayerSize(p), dim = p.dim, nblocks = dim == 3 ? 27 : 9;
   p.k0 = layers * rank / size, p.k1 = layers * (rank + 1) / size;
-  const PetscInt nloc = (p.k1 - p.k0) * plane;
+  const PetscInt nloc = (p.k1 - p.k0) * layer;
   Mat A;
   Vec b, x, coords;
   PetscCall(MatCreate(PETSC_COMM_WORLD, &A));
-  PetscCall(MatSetSizes(A, 3 * nloc, 3 * nloc, PETSC_DETERMINE, PETSC_DETERMINE));
-  PetscCall(MatSetBlockSize(A, 3));
+  PetscCall(MatSetSizes(A, dim * nloc, dim * nloc, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetBlockSize(A, dim));
   PetscCall(MatSetType(A, MATAIJ));
   PetscCall(MatSetFromOptions(A));
   PetscCall(SubassembledLayout(p, A));
-  PetscCall(MatSeqAIJSetPreallocation(A, 81, nullptr));
-  PetscCall(MatMPIAIJSetPreallocation(A, 81, nullptr, 81, nullptr));
-  PetscCall(MatSeqBAIJSetPreallocation(A, 3, 27, nullptr));
-  PetscCall(MatMPIBAIJSetPreallocation(A, 3, 27, nullptr, 27, nullptr));
-  PetscCall(MatSeqSBAIJSetPreallocation(A, 3, 27, nullptr));
-  PetscCall(MatMPISBAIJSetPreallocation(A, 3, 27, nullptr, 27, nullptr));
+  PetscCall(MatSeqAIJSetPreallocation(A, dim * nblocks, nullptr));
+  PetscCall(MatMPIAIJSetPreallocation(A, dim * nblocks, nullptr, dim * nblocks, nullptr));
+  PetscCall(MatSeqBAIJSetPreallocation(A, dim, nblocks, nullptr));
+  PetscCall(MatMPIBAIJSetPreallocation(A, dim, nblocks, nullptr, nblocks, nullptr));
+  PetscCall(MatSeqSBAIJSetPreallocation(A, dim, nblocks, nullptr));
+  PetscCall(MatMPISBAIJSetPreallocation(A, dim, nblocks, nullptr, nblocks, nullptr));
   {
     PetscBool sbaij;
     PetscCall(PetscObjectTypeCompareAny((PetscObject)A, &sbaij, MATSEQSBAIJ, MATMPISBAIJ, ""));
@@ -270,18 +353,14 @@ int main(int argc, char **argv)
 
   /* coordinates of the owned nodes */
   PetscCall(VecCreate(PETSC_COMM_WORLD, &coords));
-  PetscCall(VecSetSizes(coords, 3 * nloc, PETSC_DECIDE));
-  PetscCall(VecSetBlockSize(coords, 3));
+  PetscCall(VecSetSizes(coords, dim * nloc, PETSC_DECIDE));
+  PetscCall(VecSetBlockSize(coords, dim));
   PetscCall(VecSetFromOptions(coords));
   {
     PetscScalar *c;
     PetscCall(VecGetArray(coords, &c));
-    for (PetscInt q = 0; q < nloc; q++) {
-      const PetscInt g = p.k0 * plane + q;
-      c[3 * q + 0] = (g % (p.n + 1)) / (PetscReal)p.n;
-      c[3 * q + 1] = ((g / (p.n + 1)) % (p.n + 1)) / (PetscReal)p.n;
-      c[3 * q + 2] = (g / plane) / (PetscReal)p.n;
-    }
+    for (PetscInt q = 0; q < nloc; q++)
+      for (PetscInt d = 0, g = p.k0 * layer + q; d < dim; d++, g /= p.n + 1) c[dim * q + d] = (g % (p.n + 1)) / (PetscReal)p.n;
     PetscCall(VecRestoreArray(coords, &c));
   }
   MatNullSpace rigid;
@@ -302,16 +381,16 @@ int main(int argc, char **argv)
   PetscCall(KSPSetFromOptions(ksp));
   if (!strcmp(nsp, "coords")) {
     const PetscScalar *c;
-    std::vector<PetscReal> xyz(3 * nloc);
+    std::vector<PetscReal> xyz(dim * nloc);
     PetscCall(VecGetArrayRead(coords, &c));
-    for (PetscInt q = 0; q < 3 * nloc; q++) xyz[q] = PetscRealPart(c[q]);
+    for (PetscInt q = 0; q < dim * nloc; q++) xyz[q] = PetscRealPart(c[q]);
     PetscCall(VecRestoreArrayRead(coords, &c));
-    PetscCall(PCSetCoordinates(pc, 3, nloc, xyz.data()));
+    PetscCall(PCSetCoordinates(pc, dim, nloc, xyz.data()));
   }
-  std::vector<IS> boxes;
+  std::vector<IS> boxes, grown;
   if (p.boxes) {
-    PetscCall(BoxSubdomains(p, boxes));
-    PetscCall(PCGDSWSetSubdomains(pc, (PetscInt)boxes.size(), boxes.data(), nullptr));
+    PetscCall(BoxSubdomains(p, boxes, grown));
+    PetscCall(PCGDSWSetSubdomains(pc, (PetscInt)boxes.size(), boxes.data(), p.boxOverlap >= 0 ? grown.data() : nullptr));
   }
 
   PetscLogDouble t0, t1, t2;
@@ -323,6 +402,8 @@ int main(int argc, char **argv)
 
   PetscCall(Report(ksp, A, t1 - t0, t2 - t1));
   if (checkPhi) PetscCall(CheckPhi(pc, rigid));
+  if (checkCoarse) PetscCall(CheckCoarse(pc, A));
+  if (reportSubdomains) PetscCall(ReportSubdomains(pc));
   if (resolveJump > 0) { /* new values, same pattern: the PC refactors and re-extends */
     p.jump = resolveJump;
     PetscCall(MatZeroEntries(A));
@@ -338,6 +419,7 @@ int main(int argc, char **argv)
   }
 
   for (IS &is : boxes) PetscCall(ISDestroy(&is));
+  for (IS &is : grown) PetscCall(ISDestroy(&is));
   PetscCall(MatNullSpaceDestroy(&rigid));
   PetscCall(KSPDestroy(&ksp));
   PetscCall(VecDestroy(&coords));

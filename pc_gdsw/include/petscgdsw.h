@@ -1,7 +1,8 @@
 /* petscgdsw.h: the two-level overlapping Schwarz preconditioner PCGDSW for PETSc.
    Use it from any PETSc program with -pc_type gdsw after either
      -dll_append <prefix>/lib/libpetscgdsw.so   (no code change), or
-     PCGDSWRegister()                           (when linking the library). */
+     PCGDSWRegister()                           (when linking the library).
+   The manual pages are in pc_gdsw/src/gdsw.cxx. */
 #ifndef PETSCGDSW_H
 #define PETSCGDSW_H
 
@@ -41,21 +42,34 @@ PETSC_EXTERN const char *const PCGDSWRGDSWWeightTypes[];
 
 PETSC_EXTERN PetscErrorCode PCGDSWRegister(void);
 
-/* Element-based decomposition from an application that knows its mesh: for each of the n
-   subdomains this rank holds, the global dofs in the closure of its cells (nonoverlap[i]) and,
-   optionally, those of its geometric overlap (overlap[i], a superset; pass NULL to let the PC
-   add -pc_gdsw_overlap layers of the matrix graph). Index sets must hold whole nodes. */
+/* the decomposition */
 PETSC_EXTERN PetscErrorCode PCGDSWSetSubdomains(PC, PetscInt, IS[], IS[]);
+PETSC_EXTERN PetscErrorCode PCGDSWGetSubdomains(PC, PetscInt *, IS *[], IS *[]);
 PETSC_EXTERN PetscErrorCode PCGDSWSetSubdomainsPerRank(PC, PetscInt);
+PETSC_EXTERN PetscErrorCode PCGDSWGetSubdomainsPerRank(PC, PetscInt *);
+PETSC_EXTERN PetscErrorCode PCGDSWSetSubdomainSize(PC, PetscInt);
+PETSC_EXTERN PetscErrorCode PCGDSWGetSubdomainSize(PC, PetscInt *);
 PETSC_EXTERN PetscErrorCode PCGDSWSetOverlap(PC, PetscInt);
-PETSC_EXTERN PetscErrorCode PCGDSWSetCoarseSpaceType(PC, PCGDSWCoarseSpaceType);
-PETSC_EXTERN PetscErrorCode PCGDSWSetRotations(PC, PetscBool);
+PETSC_EXTERN PetscErrorCode PCGDSWGetOverlap(PC, PetscInt *);
 
-/* After setup: the coarse basis Phi (global dofs x coarse dofs), the coarse operator A0, and
-   counts of interface components across all ranks. References are borrowed. */
+/* the coarse space and how the levels are combined */
+PETSC_EXTERN PetscErrorCode PCGDSWSetCoarseSpaceType(PC, PCGDSWCoarseSpaceType);
+PETSC_EXTERN PetscErrorCode PCGDSWGetCoarseSpaceType(PC, PCGDSWCoarseSpaceType *);
+PETSC_EXTERN PetscErrorCode PCGDSWSetRGDSWWeightType(PC, PCGDSWRGDSWWeightType);
+PETSC_EXTERN PetscErrorCode PCGDSWGetRGDSWWeightType(PC, PCGDSWRGDSWWeightType *);
+PETSC_EXTERN PetscErrorCode PCGDSWSetRotations(PC, PetscBool);
+PETSC_EXTERN PetscErrorCode PCGDSWGetRotations(PC, PetscBool *);
+PETSC_EXTERN PetscErrorCode PCGDSWSetCombinationType(PC, PCGDSWCombinationType);
+PETSC_EXTERN PetscErrorCode PCGDSWGetCombinationType(PC, PCGDSWCombinationType *);
+PETSC_EXTERN PetscErrorCode PCGDSWSetFirstLevelType(PC, PCGDSWFirstLevelType);
+PETSC_EXTERN PetscErrorCode PCGDSWGetFirstLevelType(PC, PCGDSWFirstLevelType *);
+PETSC_EXTERN PetscErrorCode PCGDSWSetReuseCoarseBasis(PC, PetscBool);
+PETSC_EXTERN PetscErrorCode PCGDSWGetReuseCoarseBasis(PC, PetscBool *);
+
+/* after PCSetUp(): borrowed references */
 PETSC_EXTERN PetscErrorCode PCGDSWGetCoarseBasis(PC, Mat *);
 PETSC_EXTERN PetscErrorCode PCGDSWGetCoarseOperator(PC, Mat *);
-PETSC_EXTERN PetscErrorCode PCGDSWGetInterfaceCounts(PC, PetscInt *, PetscInt *, PetscInt *);
 PETSC_EXTERN PetscErrorCode PCGDSWGetCoarseKSP(PC, KSP *);
+PETSC_EXTERN PetscErrorCode PCGDSWGetInterfaceCounts(PC, PetscInt *, PetscInt *, PetscInt *);
 
 #endif

@@ -1,7 +1,8 @@
 /* PCGDSW: two-level overlapping Schwarz with the GDSW coarse space (Dohrmann, Klawonn,
    Widlund 2008; Heinlein, Klawonn, Rheinbach 2015, eq. 1):
        M^{-1} = Phi (Phi^T A Phi)^{-1} Phi^T + sum_i R_i^T A_i^{-1} R_i.
-   This file holds the PC object: options, the order of the setup modules, apply and view. */
+   This file holds the PC object: options, the order of the setup modules, apply and its
+   transpose, view, and the public functions with their manual pages. */
 #include "gdswimpl.h"
 #include <string>
 
@@ -141,6 +142,8 @@ static PetscErrorCode PCReset_GDSW(PC pc)
   PetscCall(VecScatterDestroy(&gd->restrictTo));
   PetscCall(VecScatterDestroy(&gd->prolongFrom));
   PetscCall(VecDestroy(&gd->tmp1));
+  PetscCall(PetscFree(gd->nonArr));
+  PetscCall(PetscFree(gd->ovlArr));
   gd->coarseDim = 0;
   gd->counts[0] = gd->counts[1] = gd->counts[2] = 0;
   PetscFunctionReturn(0);
@@ -156,21 +159,6 @@ static PetscErrorCode DestroyUserSubdomains(PC_GDSW *gd)
   PetscCall(PetscFree(gd->userNon));
   PetscCall(PetscFree(gd->userOvl));
   gd->nUser = -1;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCDestroy_GDSW(PC pc)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  PetscCall(PCReset_GDSW(pc));
-  PetscCall(DestroyUserSubdomains(gd));
-  PetscCall(PetscFree(gd->coords));
-  delete gd->sub;
-  delete gd->sets;
-  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "PCSetCoordinates_C", nullptr));
-  PetscCall(PetscFree(pc->data));
   PetscFunctionReturn(0);
 }
 
@@ -277,30 +265,147 @@ static PetscErrorCode PCApply_GDSW(PC pc, Vec x, Vec y)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode PCSetFromOptions_GDSW(PC pc, PetscOptionItems *PetscOptionsObject)
+/* y += sum_i R_i^T A_i^{-T} R~_i x, the transpose of GDSWApplyFirstLevel(). For the restricted
+   first level R~_i reverses the prolongation's scatter: each dof is read by the one subdomain
+   that prolongates it, and is zero in the others. */
+static PetscErrorCode ApplyFirstLevelTranspose(PC pc, Vec x, Vec y)
 {
-  PC_GDSW  *gd = (PC_GDSW *)pc->data;
-  PetscBool flg;
-  PetscInt  n;
+  PC_GDSW     *gd = (PC_GDSW *)pc->data;
+  PetscScalar *w, *wo;
 
   PetscFunctionBegin;
+  if (gd->firstLevel == PC_GDSW_FIRST_LEVEL_RESTRICTED) {
+    PetscCall(VecSet(gd->work, 0.0));
+    PetscCall(VecScatterBegin(gd->prolongFrom, x, gd->work, INSERT_VALUES, SCATTER_REVERSE));
+    PetscCall(VecScatterEnd(gd->prolongFrom, x, gd->work, INSERT_VALUES, SCATTER_REVERSE));
+  } else {
+    PetscCall(VecScatterBegin(gd->restrictTo, x, gd->work, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(gd->restrictTo, x, gd->work, INSERT_VALUES, SCATTER_FORWARD));
+  }
+  PetscCall(VecGetArray(gd->work, &w));
+  PetscCall(VecGetArray(gd->workOut, &wo));
+  for (auto &s : *gd->sub) {
+    PetscCall(VecPlaceArray(s.x, w + s.wOffset));
+    PetscCall(VecPlaceArray(s.y, wo + s.wOffset));
+    PetscCall(KSPSolveTranspose(s.ksp, s.x, s.y));
+    PetscCall(KSPCheckSolve(s.ksp, pc, s.y));
+    PetscCall(VecResetArray(s.x));
+    PetscCall(VecResetArray(s.y));
+  }
+  PetscCall(VecRestoreArray(gd->work, &w));
+  PetscCall(VecRestoreArray(gd->workOut, &wo));
+  PetscCall(VecScatterBegin(gd->restrictTo, gd->workOut, y, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecScatterEnd(gd->restrictTo, gd->workOut, y, ADD_VALUES, SCATTER_REVERSE));
+  PetscFunctionReturn(0);
+}
+
+/* y += Phi A_0^{-T} Phi^T x */
+static PetscErrorCode ApplyCoarseTranspose(PC pc, Vec x, Vec y)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  PetscCall(MatMultTranspose(gd->Phi, x, gd->r0));
+  PetscCall(KSPSolveTranspose(gd->coarseKsp, gd->r0, gd->x0));
+  PetscCall(MatMultAdd(gd->Phi, gd->x0, y, y));
+  PetscFunctionReturn(0);
+}
+
+/* The transpose of PCApply_GDSW(), each component transposed; multiplicative:
+   y = M1^T x + Q0^T (x - A^T M1^T x). */
+static PetscErrorCode PCApplyTranspose_GDSW(PC pc, Vec x, Vec y)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(GDSW_Apply, pc, x, y, 0));
+  PetscCall(VecSet(y, 0.0));
+  PetscCall(ApplyFirstLevelTranspose(pc, x, y));
+  if (gd->coarseActive && gd->combination == PC_GDSW_MULTIPLICATIVE) {
+    PetscCall(MatMultTranspose(pc->pmat, y, gd->tmp1));
+    PetscCall(VecAYPX(gd->tmp1, -1.0, x));
+    PetscCall(ApplyCoarseTranspose(pc, gd->tmp1, y));
+  } else if (gd->coarseActive) PetscCall(ApplyCoarseTranspose(pc, x, y));
+  PetscCall(PetscLogEventEnd(GDSW_Apply, pc, x, y, 0));
+  PetscFunctionReturn(0);
+}
+
+/* What each integer option takes: the end of its error messages. */
+static const char SubdomainsRange[]    = "give the number of subdomains per MPI rank, at least 1, or -1 (PETSC_DECIDE) for about -pc_gdsw_subdomain_size dofs each";
+static const char SubdomainSizeRange[] = "give the target number of dofs per subdomain, at least 1";
+static const char OverlapRange[]       = "give the number of layers, 0 or more";
+
+/* PETSc's parsers reject a malformed value on every rank, each printing a message that names
+   neither the option nor (for numbers) what it takes: check the value first, once for the PC
+   (kind: OPTION_INT, OPTION_BOOL, or OPTION_ELIST with the enum's list). */
+static PetscErrorCode CheckOptionValue(PC pc, const char name[], PetscOptionType kind, const char *const *list, const char range[])
+{
+  const char    *prefix = ((PetscObject)pc)->prefix;
+  char           value[256];
+  PetscBool      set, ok = PETSC_TRUE;
+  PetscErrorCode ierr;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsGetString(((PetscObject)pc)->options, prefix, name, value, sizeof(value), &set));
+  if (!set) PetscFunctionReturn(0);
+  std::string allowed;
+  if (kind == OPTION_ELIST) {
+    PetscEnum e;
+    PetscCall(PetscEnumFind(list, value, &e, &ok));
+    allowed = "one of:";
+    for (PetscInt i = 0; list[i + 2]; i++) allowed += std::string(i ? ", " : " ") + list[i]; /* the list ends with its type name, prefix, NULL */
+  } else if (kind == OPTION_INT || value[0]) { /* a logical option without a value is true */
+    PetscInt  i;
+    PetscBool b;
+    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
+    ierr = kind == OPTION_INT ? PetscOptionsStringToInt(value, &i) : PetscOptionsStringToBool(value, &b);
+    PetscCall(PetscPopErrorHandler());
+    ok      = (PetscBool)!ierr;
+    allowed = kind == OPTION_INT ? std::string("an integer: ") + range : "true or false";
+  }
+  PetscCheck(ok, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_WRONG, "PCGDSW: -%s%s %s is not %s", prefix ? prefix : "", name + 1, value[0] ? value : "(no value)", allowed.c_str());
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCSetFromOptions_GDSW(PC pc, PetscOptionItems *PetscOptionsObject)
+{
+  PC_GDSW              *gd = (PC_GDSW *)pc->data;
+  PetscBool             flg, b;
+  PetscInt              n;
+  PCGDSWCoarseSpaceType coarse;
+  PCGDSWRGDSWWeightType weights;
+  PCGDSWCombinationType combination;
+  PCGDSWFirstLevelType  firstLevel;
+
+  PetscFunctionBegin;
+  PetscCall(CheckOptionValue(pc, "-pc_gdsw_subdomains", OPTION_INT, nullptr, SubdomainsRange));
+  PetscCall(CheckOptionValue(pc, "-pc_gdsw_subdomain_size", OPTION_INT, nullptr, SubdomainSizeRange));
+  PetscCall(CheckOptionValue(pc, "-pc_gdsw_overlap", OPTION_INT, nullptr, OverlapRange));
+  PetscCall(CheckOptionValue(pc, "-pc_gdsw_coarse_space", OPTION_ELIST, PCGDSWCoarseSpaceTypes, nullptr));
+  PetscCall(CheckOptionValue(pc, "-pc_gdsw_rgdsw_weights", OPTION_ELIST, PCGDSWRGDSWWeightTypes, nullptr));
+  PetscCall(CheckOptionValue(pc, "-pc_gdsw_rotations", OPTION_BOOL, nullptr, nullptr));
+  PetscCall(CheckOptionValue(pc, "-pc_gdsw_combination", OPTION_ELIST, PCGDSWCombinationTypes, nullptr));
+  PetscCall(CheckOptionValue(pc, "-pc_gdsw_first_level_type", OPTION_ELIST, PCGDSWFirstLevelTypes, nullptr));
+  PetscCall(CheckOptionValue(pc, "-pc_gdsw_reuse_coarse_basis", OPTION_BOOL, nullptr, nullptr));
   PetscOptionsHeadBegin(PetscOptionsObject, "GDSW two-level overlapping Schwarz options");
-  n = gd->nsubPerRank;
-  PetscCall(PetscOptionsInt("-pc_gdsw_subdomains", "Subdomains per MPI rank (METIS on the rank's node graph); -1 (PETSC_DECIDE): about -pc_gdsw_subdomain_size dofs each", "PCGDSWSetSubdomainsPerRank", n, &n, &flg));
+  PetscCall(PetscOptionsInt("-pc_gdsw_subdomains", "Subdomains per MPI rank (METIS on the rank's node graph); -1 (PETSC_DECIDE): about -pc_gdsw_subdomain_size dofs each", "PCGDSWSetSubdomainsPerRank", gd->nsubPerRank, &n, &flg));
   if (flg) PetscCall(PCGDSWSetSubdomainsPerRank(pc, n));
-  n = gd->subdomainSize;
-  PetscCall(PetscOptionsInt("-pc_gdsw_subdomain_size", "Target dofs per subdomain when -pc_gdsw_subdomains is not given (the fastest on 3D elasticity here)", "", n, &n, &flg));
-  PetscCheck(n >= 1, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: -pc_gdsw_subdomain_size %" PetscInt_FMT " is out of range: give the target number of dofs per subdomain, at least 1", n);
-  gd->subdomainSize = n;
-  n = gd->overlap;
-  PetscCall(PetscOptionsInt("-pc_gdsw_overlap", "Overlap in layers of the matrix graph (used when the caller gives no overlapping subdomains)", "PCGDSWSetOverlap", n, &n, &flg));
+  PetscCall(PetscOptionsInt("-pc_gdsw_subdomain_size", "Target dofs per subdomain when -pc_gdsw_subdomains is not given (the fastest on 3D elasticity here)", "PCGDSWSetSubdomainSize", gd->subdomainSize, &n, &flg));
+  if (flg) PetscCall(PCGDSWSetSubdomainSize(pc, n));
+  PetscCall(PetscOptionsInt("-pc_gdsw_overlap", "Overlap in layers of the matrix graph (used when the caller gives no overlapping subdomains)", "PCGDSWSetOverlap", gd->overlap, &n, &flg));
   if (flg) PetscCall(PCGDSWSetOverlap(pc, n));
-  PetscCall(PetscOptionsEnum("-pc_gdsw_coarse_space", "Coarse space", "PCGDSWSetCoarseSpaceType", PCGDSWCoarseSpaceTypes, (PetscEnum)gd->coarseType, (PetscEnum *)&gd->coarseType, nullptr));
-  PetscCall(PetscOptionsEnum("-pc_gdsw_rgdsw_weights", "RGDSW partition of unity: equal (option 1) or by inverse distance to the coarse nodes (option 2.2, needs coordinates)", "", PCGDSWRGDSWWeightTypes, (PetscEnum)gd->rgdswWeights, (PetscEnum *)&gd->rgdswWeights, nullptr));
-  PetscCall(PetscOptionsBool("-pc_gdsw_rotations", "Use the rotations of the null space (false: GDSW-nr, translations only)", "PCGDSWSetRotations", gd->rotations, &gd->rotations, nullptr));
-  PetscCall(PetscOptionsEnum("-pc_gdsw_combination", "How the coarse and local corrections are combined", "", PCGDSWCombinationTypes, (PetscEnum)gd->combination, (PetscEnum *)&gd->combination, nullptr));
-  PetscCall(PetscOptionsEnum("-pc_gdsw_first_level_type", "Plain additive (symmetric) or restricted (RAS) prolongation of the local corrections", "", PCGDSWFirstLevelTypes, (PetscEnum)gd->firstLevel, (PetscEnum *)&gd->firstLevel, nullptr));
-  PetscCall(PetscOptionsBool("-pc_gdsw_reuse_coarse_basis", "Keep Phi when the operator's values change; recompute only A_0 = Phi^T A Phi", "", gd->reuseCoarseBasis, &gd->reuseCoarseBasis, nullptr));
+  PetscCall(PetscOptionsEnum("-pc_gdsw_coarse_space", "Coarse space", "PCGDSWSetCoarseSpaceType", PCGDSWCoarseSpaceTypes, (PetscEnum)gd->coarseType, (PetscEnum *)&coarse, &flg));
+  if (flg) PetscCall(PCGDSWSetCoarseSpaceType(pc, coarse));
+  PetscCall(PetscOptionsEnum("-pc_gdsw_rgdsw_weights", "RGDSW partition of unity: equal (option 1) or by inverse distance to the coarse nodes (option 2.2, needs coordinates)", "PCGDSWSetRGDSWWeightType", PCGDSWRGDSWWeightTypes, (PetscEnum)gd->rgdswWeights, (PetscEnum *)&weights, &flg));
+  if (flg) PetscCall(PCGDSWSetRGDSWWeightType(pc, weights));
+  PetscCall(PetscOptionsBool("-pc_gdsw_rotations", "Use the rotations of the null space (false: GDSW-nr, translations only)", "PCGDSWSetRotations", gd->rotations, &b, &flg));
+  if (flg) PetscCall(PCGDSWSetRotations(pc, b));
+  PetscCall(PetscOptionsEnum("-pc_gdsw_combination", "How the coarse and local corrections are combined", "PCGDSWSetCombinationType", PCGDSWCombinationTypes, (PetscEnum)gd->combination, (PetscEnum *)&combination, &flg));
+  if (flg) PetscCall(PCGDSWSetCombinationType(pc, combination));
+  PetscCall(PetscOptionsEnum("-pc_gdsw_first_level_type", "Plain additive (symmetric) or restricted (RAS) prolongation of the local corrections", "PCGDSWSetFirstLevelType", PCGDSWFirstLevelTypes, (PetscEnum)gd->firstLevel, (PetscEnum *)&firstLevel, &flg));
+  if (flg) PetscCall(PCGDSWSetFirstLevelType(pc, firstLevel));
+  PetscCall(PetscOptionsBool("-pc_gdsw_reuse_coarse_basis", "Keep Phi when the operator's values change; recompute only A_0 = Phi^T A Phi", "PCGDSWSetReuseCoarseBasis", gd->reuseCoarseBasis, &b, &flg));
+  if (flg) PetscCall(PCGDSWSetReuseCoarseBasis(pc, b));
   PetscOptionsHeadEnd();
   PetscFunctionReturn(0);
 }
@@ -331,6 +436,11 @@ static PetscErrorCode PCView_GDSW(PC pc, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPrintf(viewer, "  %" PetscInt_FMT " subdomains (%s), overlap %s, %" PetscInt_FMT " dofs per node, %" PetscInt_FMT " null-space vectors%s\n", gd->nGlobalSubdomains, source,
                                    gd->nUser >= 0 && gd->userOvl ? "given by the application" : (std::to_string(gd->overlap) + " graph layers").c_str(), gd->bs, gd->nz, gd->haveCoords ? " (rigid modes from coordinates)" : ""));
   PetscCall(PetscViewerASCIIPrintf(viewer, "  interface components: %" PetscInt_FMT " faces, %" PetscInt_FMT " edges, %" PetscInt_FMT " vertices; %" PetscInt_FMT " Dirichlet dofs excluded\n", gd->counts[0], gd->counts[1], gd->counts[2], gd->nDirichletRows));
+  if (gd->coarseType == PC_GDSW_COARSE_RGDSW) {
+    /* the distance weights are measured between the coordinates the rigid modes are built from */
+    if (gd->rgdswWeights == PC_GDSW_RGDSW_WEIGHTS_EQUAL || gd->haveCoords) PetscCall(PetscViewerASCIIPrintf(viewer, "  RGDSW partition of unity: %s\n", PCGDSWRGDSWWeightTypes[gd->rgdswWeights]));
+    else PetscCall(PetscViewerASCIIPrintf(viewer, "  RGDSW partition of unity: equal (the distance weights need PCSetCoordinates() as the source of the null space)\n"));
+  }
   if (gd->coarseType != PC_GDSW_COARSE_NONE && !gd->coarseActive) PetscCall(PetscViewerASCIIPrintf(viewer, "  no interface, hence no coarse level\n"));
   if (gd->coarseActive) {
     PetscCall(PetscViewerASCIIPrintf(viewer, "  coarse dimension %" PetscInt_FMT "%s\n", gd->coarseDim, gd->reuseCoarseBasis ? " (basis reused across setups)" : ""));
@@ -355,6 +465,7 @@ static PetscErrorCode PCView_GDSW(PC pc, PetscViewer viewer)
   PetscFunctionReturn(0);
 }
 
+/* Coordinates change the coarse space: the next PCSetUp() starts afresh. */
 static PetscErrorCode PCSetCoordinates_GDSW(PC pc, PetscInt dim, PetscInt n, PetscReal *coords)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
@@ -365,22 +476,17 @@ static PetscErrorCode PCSetCoordinates_GDSW(PC pc, PetscInt dim, PetscInt n, Pet
   PetscCall(PetscMalloc1(dim * n, &gd->coords));
   PetscCall(PetscArraycpy(gd->coords, coords, dim * n));
   gd->coordDim = dim, gd->nCoordNodes = n;
+  pc->setupcalled = 0;
   PetscFunctionReturn(0);
 }
 
-static PC_GDSW *Data(PC pc)
-{
-  PetscBool same;
-  PetscObjectTypeCompare((PetscObject)pc, PCGDSW, &same);
-  return same ? (PC_GDSW *)pc->data : nullptr;
-}
+/* ---- the implementations of the public functions (their manual pages are further down) ---- */
 
-PetscErrorCode PCGDSWSetSubdomains(PC pc, PetscInt n, IS non[], IS ovl[])
+static PetscErrorCode PCGDSWSetSubdomains_GDSW(PC pc, PetscInt n, IS non[], IS ovl[])
 {
-  PC_GDSW *gd = Data(pc);
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
 
   PetscFunctionBegin;
-  if (!gd) PetscFunctionReturn(0);
   PetscCheck(n >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "PCGDSWSetSubdomains: the number of subdomains %" PetscInt_FMT " must be >= 0", n);
   for (PetscInt i = 0; i < n; i++) PetscCall(PetscObjectReference((PetscObject)non[i]));
   if (ovl)
@@ -397,107 +503,325 @@ PetscErrorCode PCGDSWSetSubdomains(PC pc, PetscInt n, IS non[], IS ovl[])
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PCGDSWSetSubdomainsPerRank(PC pc, PetscInt n)
+#define GDSW_REQUIRE_SETUP(pc) PetscCheck((pc)->setupcalled, PetscObjectComm((PetscObject)(pc)), PETSC_ERR_ARG_WRONGSTATE, "PCGDSW: call PCSetUp() first")
+
+static PetscErrorCode PCGDSWGetSubdomains_GDSW(PC pc, PetscInt *n, IS *non[], IS *ovl[])
 {
-  PC_GDSW *gd = Data(pc);
+  PC_GDSW       *gd   = (PC_GDSW *)pc->data;
+  const PetscInt nsub = (PetscInt)gd->sub->size();
 
   PetscFunctionBegin;
-  if (!gd) PetscFunctionReturn(0);
-  PetscCheck(n >= 1 || n == PETSC_DECIDE, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: -pc_gdsw_subdomains %" PetscInt_FMT " is out of range: give the number of subdomains per MPI rank, at least 1, or -1 (PETSC_DECIDE) for about -pc_gdsw_subdomain_size dofs each", n);
+  GDSW_REQUIRE_SETUP(pc);
+  if (!gd->nonArr && nsub) {
+    PetscCall(PetscMalloc1(nsub, &gd->nonArr));
+    PetscCall(PetscMalloc1(nsub, &gd->ovlArr));
+    for (PetscInt i = 0; i < nsub; i++) gd->nonArr[i] = (*gd->sub)[i].nonoverlap, gd->ovlArr[i] = (*gd->sub)[i].overlap;
+  }
+  if (n) *n = nsub;
+  if (non) *non = gd->nonArr;
+  if (ovl) *ovl = gd->ovlArr;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWSetSubdomainsPerRank_GDSW(PC pc, PetscInt n)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  PetscCheck(n >= 1 || n == PETSC_DECIDE, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: -pc_gdsw_subdomains %" PetscInt_FMT " is out of range: %s", n, SubdomainsRange);
+  if (n != gd->nsubPerRank) pc->setupcalled = 0;
   gd->nsubPerRank = n;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PCGDSWSetOverlap(PC pc, PetscInt k)
+static PetscErrorCode PCGDSWGetSubdomainsPerRank_GDSW(PC pc, PetscInt *n)
 {
-  PC_GDSW *gd = Data(pc);
+  PetscFunctionBegin;
+  *n = ((PC_GDSW *)pc->data)->nsubPerRank;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWSetSubdomainSize_GDSW(PC pc, PetscInt n)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
 
   PetscFunctionBegin;
-  if (!gd) PetscFunctionReturn(0);
-  PetscCheck(k >= 0, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: -pc_gdsw_overlap %" PetscInt_FMT " is out of range: give the number of layers, 0 or more", k);
+  PetscCheck(n >= 1, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: -pc_gdsw_subdomain_size %" PetscInt_FMT " is out of range: %s", n, SubdomainSizeRange);
+  if (n != gd->subdomainSize) pc->setupcalled = 0;
+  gd->subdomainSize = n;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWGetSubdomainSize_GDSW(PC pc, PetscInt *n)
+{
+  PetscFunctionBegin;
+  *n = ((PC_GDSW *)pc->data)->subdomainSize;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWSetOverlap_GDSW(PC pc, PetscInt k)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  PetscCheck(k >= 0, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: -pc_gdsw_overlap %" PetscInt_FMT " is out of range: %s", k, OverlapRange);
+  if (k != gd->overlap) pc->setupcalled = 0;
   gd->overlap = k;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PCGDSWSetCoarseSpaceType(PC pc, PCGDSWCoarseSpaceType t)
+static PetscErrorCode PCGDSWGetOverlap_GDSW(PC pc, PetscInt *k)
 {
-  PC_GDSW *gd = Data(pc);
-
   PetscFunctionBegin;
-  if (gd) gd->coarseType = t;
+  *k = ((PC_GDSW *)pc->data)->overlap;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PCGDSWSetRotations(PC pc, PetscBool r)
+/* An enum value from the API (options are checked by name in CheckOptionValue()). */
+#define GDSW_CHECK_ENUM(pc, t, last, list) \
+  PetscCheck((t) >= 0 && (t) <= (last), PetscObjectComm((PetscObject)(pc)), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: %d is not a valid %s", (int)(t), (list)[(last) + 1])
+
+static PetscErrorCode PCGDSWSetCoarseSpaceType_GDSW(PC pc, PCGDSWCoarseSpaceType t)
 {
-  PC_GDSW *gd = Data(pc);
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
 
   PetscFunctionBegin;
-  if (gd) gd->rotations = r;
+  GDSW_CHECK_ENUM(pc, t, PC_GDSW_COARSE_NONE, PCGDSWCoarseSpaceTypes);
+  if (t != gd->coarseType) pc->setupcalled = 0;
+  gd->coarseType = t;
   PetscFunctionReturn(0);
 }
 
-#define GDSW_REQUIRE_SETUP(pc, gd) \
-  PetscCheck((gd) && (pc)->setupcalled, PetscObjectComm((PetscObject)(pc)), PETSC_ERR_ARG_WRONGSTATE, "PCGDSW: call PCSetUp() on a PC of type gdsw first")
-
-PetscErrorCode PCGDSWGetCoarseBasis(PC pc, Mat *Phi)
+static PetscErrorCode PCGDSWGetCoarseSpaceType_GDSW(PC pc, PCGDSWCoarseSpaceType *t)
 {
-  PC_GDSW *gd = Data(pc);
-
   PetscFunctionBegin;
-  GDSW_REQUIRE_SETUP(pc, gd);
-  *Phi = gd->Phi;
+  *t = ((PC_GDSW *)pc->data)->coarseType;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PCGDSWGetCoarseOperator(PC pc, Mat *A0)
+static PetscErrorCode PCGDSWSetRGDSWWeightType_GDSW(PC pc, PCGDSWRGDSWWeightType t)
 {
-  PC_GDSW *gd = Data(pc);
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
 
   PetscFunctionBegin;
-  GDSW_REQUIRE_SETUP(pc, gd);
-  *A0 = gd->A0;
+  GDSW_CHECK_ENUM(pc, t, PC_GDSW_RGDSW_WEIGHTS_DISTANCE, PCGDSWRGDSWWeightTypes);
+  if (t != gd->rgdswWeights) pc->setupcalled = 0;
+  gd->rgdswWeights = t;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PCGDSWGetCoarseKSP(PC pc, KSP *ksp)
+static PetscErrorCode PCGDSWGetRGDSWWeightType_GDSW(PC pc, PCGDSWRGDSWWeightType *t)
 {
-  PC_GDSW *gd = Data(pc);
-
   PetscFunctionBegin;
-  GDSW_REQUIRE_SETUP(pc, gd);
-  *ksp = gd->coarseKsp;
+  *t = ((PC_GDSW *)pc->data)->rgdswWeights;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode PCGDSWGetInterfaceCounts(PC pc, PetscInt *faces, PetscInt *edges, PetscInt *vertices)
+static PetscErrorCode PCGDSWSetRotations_GDSW(PC pc, PetscBool flg)
 {
-  PC_GDSW *gd = Data(pc);
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
 
   PetscFunctionBegin;
-  GDSW_REQUIRE_SETUP(pc, gd);
+  if (flg != gd->rotations) pc->setupcalled = 0;
+  gd->rotations = flg;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWGetRotations_GDSW(PC pc, PetscBool *flg)
+{
+  PetscFunctionBegin;
+  *flg = ((PC_GDSW *)pc->data)->rotations;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWSetCombinationType_GDSW(PC pc, PCGDSWCombinationType t)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  GDSW_CHECK_ENUM(pc, t, PC_GDSW_MULTIPLICATIVE, PCGDSWCombinationTypes);
+  if (t != gd->combination) pc->setupcalled = 0; /* the multiplicative variant has a work vector */
+  gd->combination = t;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWGetCombinationType_GDSW(PC pc, PCGDSWCombinationType *t)
+{
+  PetscFunctionBegin;
+  *t = ((PC_GDSW *)pc->data)->combination;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWSetFirstLevelType_GDSW(PC pc, PCGDSWFirstLevelType t)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  GDSW_CHECK_ENUM(pc, t, PC_GDSW_FIRST_LEVEL_RESTRICTED, PCGDSWFirstLevelTypes);
+  if (t != gd->firstLevel) pc->setupcalled = 0; /* the restricted prolongation has its own scatter */
+  gd->firstLevel = t;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWGetFirstLevelType_GDSW(PC pc, PCGDSWFirstLevelType *t)
+{
+  PetscFunctionBegin;
+  *t = ((PC_GDSW *)pc->data)->firstLevel;
+  PetscFunctionReturn(0);
+}
+
+/* Read at the next setup with new values: nothing to rebuild. */
+static PetscErrorCode PCGDSWSetReuseCoarseBasis_GDSW(PC pc, PetscBool flg)
+{
+  PetscFunctionBegin;
+  ((PC_GDSW *)pc->data)->reuseCoarseBasis = flg;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWGetReuseCoarseBasis_GDSW(PC pc, PetscBool *flg)
+{
+  PetscFunctionBegin;
+  *flg = ((PC_GDSW *)pc->data)->reuseCoarseBasis;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWGetCoarseBasis_GDSW(PC pc, Mat *Phi)
+{
+  PetscFunctionBegin;
+  GDSW_REQUIRE_SETUP(pc);
+  *Phi = ((PC_GDSW *)pc->data)->Phi;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWGetCoarseOperator_GDSW(PC pc, Mat *A0)
+{
+  PetscFunctionBegin;
+  GDSW_REQUIRE_SETUP(pc);
+  *A0 = ((PC_GDSW *)pc->data)->A0;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWGetCoarseKSP_GDSW(PC pc, KSP *ksp)
+{
+  PetscFunctionBegin;
+  GDSW_REQUIRE_SETUP(pc);
+  *ksp = ((PC_GDSW *)pc->data)->coarseKsp;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWGetInterfaceCounts_GDSW(PC pc, PetscInt *faces, PetscInt *edges, PetscInt *vertices)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  GDSW_REQUIRE_SETUP(pc);
   if (faces) *faces = gd->counts[0];
   if (edges) *edges = gd->counts[1];
   if (vertices) *vertices = gd->counts[2];
   PetscFunctionReturn(0);
 }
 
+/* The composed methods, added in PCCreate_GDSW() and removed in PCDestroy_GDSW(). */
+static PetscErrorCode ComposeMethods(PC pc, PetscBool add)
+{
+  PetscObject o = (PetscObject)pc;
+
+  PetscFunctionBegin;
+#define GDSW_COMPOSE(name) PetscCall(PetscObjectComposeFunction(o, #name "_C", add ? name##_GDSW : nullptr))
+  GDSW_COMPOSE(PCSetCoordinates);
+  GDSW_COMPOSE(PCGDSWSetSubdomains);
+  GDSW_COMPOSE(PCGDSWGetSubdomains);
+  GDSW_COMPOSE(PCGDSWSetSubdomainsPerRank);
+  GDSW_COMPOSE(PCGDSWGetSubdomainsPerRank);
+  GDSW_COMPOSE(PCGDSWSetSubdomainSize);
+  GDSW_COMPOSE(PCGDSWGetSubdomainSize);
+  GDSW_COMPOSE(PCGDSWSetOverlap);
+  GDSW_COMPOSE(PCGDSWGetOverlap);
+  GDSW_COMPOSE(PCGDSWSetCoarseSpaceType);
+  GDSW_COMPOSE(PCGDSWGetCoarseSpaceType);
+  GDSW_COMPOSE(PCGDSWSetRGDSWWeightType);
+  GDSW_COMPOSE(PCGDSWGetRGDSWWeightType);
+  GDSW_COMPOSE(PCGDSWSetRotations);
+  GDSW_COMPOSE(PCGDSWGetRotations);
+  GDSW_COMPOSE(PCGDSWSetCombinationType);
+  GDSW_COMPOSE(PCGDSWGetCombinationType);
+  GDSW_COMPOSE(PCGDSWSetFirstLevelType);
+  GDSW_COMPOSE(PCGDSWGetFirstLevelType);
+  GDSW_COMPOSE(PCGDSWSetReuseCoarseBasis);
+  GDSW_COMPOSE(PCGDSWGetReuseCoarseBasis);
+  GDSW_COMPOSE(PCGDSWGetCoarseBasis);
+  GDSW_COMPOSE(PCGDSWGetCoarseOperator);
+  GDSW_COMPOSE(PCGDSWGetCoarseKSP);
+  GDSW_COMPOSE(PCGDSWGetInterfaceCounts);
+#undef GDSW_COMPOSE
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCDestroy_GDSW(PC pc)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  PetscCall(PCReset_GDSW(pc));
+  PetscCall(DestroyUserSubdomains(gd));
+  PetscCall(PetscFree(gd->coords));
+  delete gd->sub;
+  delete gd->sets;
+  PetscCall(ComposeMethods(pc, PETSC_FALSE));
+  PetscCall(PetscFree(pc->data));
+  PetscFunctionReturn(0);
+}
+
 /*MC
-   PCGDSW - two-level overlapping Schwarz with an energy-minimising (GDSW or RGDSW) coarse space.
+   PCGDSW - two-level overlapping Schwarz preconditioner with an energy-minimizing coarse space:
+   GDSW [DKW08], its reduced-dimension variant RGDSW [DW17], or none (one-level Schwarz),
+
+   M^{-1} = Phi (Phi^T A Phi)^{-1} Phi^T + sum_i R_i^T A_i^{-1} R_i,
+
+   where the columns of Phi are the null space of the operator (rigid-body modes for elasticity)
+   restricted to the interface components of a nonoverlapping decomposition (faces, edges and
+   vertices, shared by the same subdomains) and extended harmonically into the subdomains
+   [HKR16a], and A_i is the operator on the overlapping subdomain i.
 
    Options Database Keys:
-+  -pc_gdsw_subdomains <-1> - subdomains per MPI rank (METIS on the rank's node graph); -1 (PETSC_DECIDE): the size rule
-.  -pc_gdsw_subdomain_size <12000> - the size rule's target dofs per subdomain
-.  -pc_gdsw_overlap <1> - overlap in layers of the matrix graph
-.  -pc_gdsw_coarse_space <gdsw,rgdsw,none> - coarse space
-.  -pc_gdsw_rgdsw_weights <distance,equal> - RGDSW partition of unity (equal without coordinates)
-.  -pc_gdsw_rotations <true> - false gives GDSW-nr (translations only)
-.  -pc_gdsw_combination <additive,multiplicative> - combination of the two levels
-.  -pc_gdsw_first_level_type <additive,restricted> - prolongation of local corrections
--  -pc_gdsw_reuse_coarse_basis <false> - keep Phi across setups with new values
++  -pc_gdsw_subdomains <-1> - subdomains per MPI rank, METIS on the rank's node graph; -1 (`PETSC_DECIDE`): about -pc_gdsw_subdomain_size dofs each (see `PCGDSWSetSubdomainsPerRank()`)
+.  -pc_gdsw_subdomain_size <12000> - the target number of dofs per subdomain of that rule (see `PCGDSWSetSubdomainSize()`)
+.  -pc_gdsw_overlap <1> - layers of the matrix graph added to each subdomain (see `PCGDSWSetOverlap()`)
+.  -pc_gdsw_coarse_space <gdsw> - gdsw, rgdsw or none (see `PCGDSWSetCoarseSpaceType()`)
+.  -pc_gdsw_rgdsw_weights <distance> - RGDSW's partition of unity, distance or equal (see `PCGDSWSetRGDSWWeightType()`)
+.  -pc_gdsw_rotations <true> - false: translations only, GDSW-nr (see `PCGDSWSetRotations()`)
+.  -pc_gdsw_combination <additive> - additive or multiplicative (see `PCGDSWSetCombinationType()`)
+.  -pc_gdsw_first_level_type <additive> - additive or restricted, RAS (see `PCGDSWSetFirstLevelType()`)
+-  -pc_gdsw_reuse_coarse_basis <false> - keep Phi when the operator's values change (see `PCGDSWSetReuseCoarseBasis()`)
 
-   Subsolvers: -pc_gdsw_sub_ (overlapping subdomains), -pc_gdsw_extension_ (interiors, for the
-   harmonic extension), -pc_gdsw_coarse_ (A_0).
+   Notes:
+   The subdomains are, in this order of preference, the application's (`PCGDSWSetSubdomains()`),
+   a `MATIS` operator's local-to-global map (one per rank), or METIS parts of each rank's node graph.
+
+   The null space comes from the operator's near-null space (`MatSetNearNullSpace()`), else from
+   the coordinates given with `PCSetCoordinates()` (rigid-body modes in 2D and 3D), else it is
+   the translations of each of the block size's components.
+
+   The subsolvers are `KSP` objects with the prefixes -pc_gdsw_sub_ (the overlapping subdomains),
+   -pc_gdsw_extension_ (the interiors of the harmonic extension) and -pc_gdsw_coarse_ (A_0 =
+   Phi^T A Phi, see `PCGDSWGetCoarseKSP()`). Defaults: `KSPPREONLY` with Cholesky (CHOLMOD)
+   for symmetric operators, else LU (UMFPACK); MUMPS on all ranks of the `PC` for A_0.
+
+   `PCApplyTranspose()` applies the transpose of each component (transposed local and coarse
+   solves; for the restricted first level the restriction and prolongation exchange roles), so
+   `KSPSolveTranspose()` works with every variant.
+
+   References:
++  * - C. R. Dohrmann, A. Klawonn, O. B. Widlund. Domain decomposition for less regular subdomains: overlapping Schwarz in two dimensions. SIAM J. Numer. Anal. 46(4), 2008 [DKW08].
+.  * - C. R. Dohrmann, O. B. Widlund. On the design of small coarse spaces for domain decomposition algorithms. SIAM J. Sci. Comput. 39(4), 2017 [DW17] (RGDSW).
+.  * - A. Heinlein, A. Klawonn, O. Rheinbach, O. B. Widlund. Improving the parallel performance of overlapping Schwarz methods by using a smaller energy minimizing coarse space. Domain Decomposition Methods in Science and Engineering XXIV, Lect. Notes Comput. Sci. Eng. 125, Springer, 2018 (RGDSW in parallel).
+.  * - A. Heinlein, A. Klawonn, O. Rheinbach. A parallel implementation of a two-level overlapping Schwarz method with energy-minimizing coarse space based on Trilinos. SIAM J. Sci. Comput. 38(6), 2016 [HKR16a].
+-  * - A. Heinlein, A. Klawonn, O. Rheinbach. Parallel two-level overlapping Schwarz methods in fluid-structure interaction. Numerical Mathematics and Advanced Applications ENUMATH 2015, Lect. Notes Comput. Sci. Eng. 112, Springer, 2016 [HKR16b].
+
+   Level: intermediate
+
+.seealso: `PCCreate()`, `PCSetType()`, `PCType`, `PC`, `PCASM`, `PCBDDC`, `PCGDSWRegister()`, `PCGDSWSetSubdomains()`, `PCGDSWGetCoarseBasis()`,
+          `PCGDSWGetCoarseKSP()`, `PCSetCoordinates()`, `MatSetNearNullSpace()`
 M*/
 PETSC_EXTERN PetscErrorCode PCCreate_GDSW(PC pc)
 {
@@ -521,21 +845,684 @@ PETSC_EXTERN PetscErrorCode PCCreate_GDSW(PC pc)
 
   pc->ops->setup          = PCSetUp_GDSW;
   pc->ops->apply          = PCApply_GDSW;
+  pc->ops->applytranspose = PCApplyTranspose_GDSW;
   pc->ops->reset          = PCReset_GDSW;
   pc->ops->destroy        = PCDestroy_GDSW;
   pc->ops->setfromoptions = PCSetFromOptions_GDSW;
   pc->ops->view           = PCView_GDSW;
-  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "PCSetCoordinates_C", PCSetCoordinates_GDSW));
+  PetscCall(ComposeMethods(pc, PETSC_TRUE));
   PetscFunctionReturn(0);
 }
 
+/*@
+   PCGDSWSetSubdomains - Sets this rank's subdomains of `PCGDSW`: an element-based decomposition from an application that knows its mesh
+
+   Collective on pc
+
+   Input Parameters:
++  pc - the preconditioner context
+.  n - the number of subdomains this rank holds (0 or more; the numbers may differ between ranks)
+.  nonoverlap - for each subdomain the global dofs in the closure of its cells
+-  overlap - for each subdomain the global dofs of its overlapping subdomain, a superset of nonoverlap[i], or NULL to add -pc_gdsw_overlap layers of the matrix graph
+
+   Notes:
+   Each index set must hold whole nodes (all dofs of each node it touches, for the block size of the operator), and together the nonoverlapping sets must cover every dof.
+   Empty subdomains are dropped. The `PC` takes references to the index sets; the caller may destroy its own.
+   The next `PCSetUp()` rebuilds the preconditioner.
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWGetSubdomains()`, `PCGDSWSetSubdomainsPerRank()`, `PCGDSWSetOverlap()`, `PCASMSetLocalSubdomains()`
+@*/
+PetscErrorCode PCGDSWSetSubdomains(PC pc, PetscInt n, IS nonoverlap[], IS overlap[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  if (n > 0) PetscValidPointer(nonoverlap, 3);
+  for (PetscInt i = 0; i < n; i++) {
+    PetscValidHeaderSpecific(nonoverlap[i], IS_CLASSID, 3);
+    if (overlap) PetscValidHeaderSpecific(overlap[i], IS_CLASSID, 4);
+  }
+  PetscTryMethod(pc, "PCGDSWSetSubdomains_C", (PC, PetscInt, IS[], IS[]), (pc, n, nonoverlap, overlap));
+  PetscFunctionReturn(0);
+}
+
+/*@C
+   PCGDSWGetSubdomains - Gets this rank's subdomains of `PCGDSW` as the preconditioner uses them
+
+   Not Collective
+
+   Input Parameter:
+.  pc - the preconditioner context, set up
+
+   Output Parameters:
++  n - the number of subdomains this rank holds (empty ones dropped), or NULL
+.  nonoverlap - for each the global dofs of the nonoverlapping subdomain, or NULL
+-  overlap - for each the global dofs of the overlapping subdomain, or NULL
+
+   Note:
+   The arrays and index sets belong to the `PC` and stay valid until its next `PCSetUp()` that rebuilds it.
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWSetSubdomains()`, `PCGDSWSetOverlap()`, `PCASMGetLocalSubdomains()`
+@*/
+PetscErrorCode PCGDSWGetSubdomains(PC pc, PetscInt *n, IS *nonoverlap[], IS *overlap[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscUseMethod(pc, "PCGDSWGetSubdomains_C", (PC, PetscInt *, IS *[], IS *[]), (pc, n, nonoverlap, overlap));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWSetSubdomainsPerRank - Sets the number of subdomains per MPI rank of `PCGDSW` when it splits each rank's node graph with METIS
+
+   Logically Collective on pc
+
+   Input Parameters:
++  pc - the preconditioner context
+-  n - the number of subdomains per rank, at least 1, or `PETSC_DECIDE` (the default) for about `PCGDSWSetSubdomainSize()` dofs each
+
+   Options Database Key:
+.  -pc_gdsw_subdomains <n> - sets the number
+
+   Notes:
+   Not used when the application gives its subdomains with `PCGDSWSetSubdomains()`. A `MATIS` operator has one subdomain per rank; other values are an error there.
+   A new value makes the next `PCSetUp()` rebuild the preconditioner.
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWGetSubdomainsPerRank()`, `PCGDSWSetSubdomainSize()`, `PCGDSWSetSubdomains()`
+@*/
+PetscErrorCode PCGDSWSetSubdomainsPerRank(PC pc, PetscInt n)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidLogicalCollectiveInt(pc, n, 2);
+  PetscTryMethod(pc, "PCGDSWSetSubdomainsPerRank_C", (PC, PetscInt), (pc, n));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetSubdomainsPerRank - Gets the number of subdomains per MPI rank requested from `PCGDSW`
+
+   Not Collective
+
+   Input Parameter:
+.  pc - the preconditioner context
+
+   Output Parameter:
+.  n - the number, or `PETSC_DECIDE` for the size rule
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWSetSubdomainsPerRank()`, `PCGDSWGetSubdomains()`
+@*/
+PetscErrorCode PCGDSWGetSubdomainsPerRank(PC pc, PetscInt *n)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidIntPointer(n, 2);
+  PetscUseMethod(pc, "PCGDSWGetSubdomainsPerRank_C", (PC, PetscInt *), (pc, n));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWSetSubdomainSize - Sets the target number of dofs per subdomain with which `PCGDSW` chooses the number of subdomains per rank
+
+   Logically Collective on pc
+
+   Input Parameters:
++  pc - the preconditioner context
+-  n - the target, at least 1 (default 12000)
+
+   Options Database Key:
+.  -pc_gdsw_subdomain_size <n> - sets the target
+
+   Notes:
+   Each rank takes round(local dofs / n) subdomains, at least 1, when neither the application nor `PCGDSWSetSubdomainsPerRank()` fixes them.
+   The default is the fastest of 1-32 subdomains per rank measured on 3D elasticity at 49 k and 96 k dofs per rank.
+   A new value makes the next `PCSetUp()` rebuild the preconditioner.
+
+   Level: advanced
+
+.seealso: `PCGDSW`, `PCGDSWGetSubdomainSize()`, `PCGDSWSetSubdomainsPerRank()`
+@*/
+PetscErrorCode PCGDSWSetSubdomainSize(PC pc, PetscInt n)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidLogicalCollectiveInt(pc, n, 2);
+  PetscTryMethod(pc, "PCGDSWSetSubdomainSize_C", (PC, PetscInt), (pc, n));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetSubdomainSize - Gets the target number of dofs per subdomain of `PCGDSW`
+
+   Not Collective
+
+   Input Parameter:
+.  pc - the preconditioner context
+
+   Output Parameter:
+.  n - the target
+
+   Level: advanced
+
+.seealso: `PCGDSW`, `PCGDSWSetSubdomainSize()`
+@*/
+PetscErrorCode PCGDSWGetSubdomainSize(PC pc, PetscInt *n)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidIntPointer(n, 2);
+  PetscUseMethod(pc, "PCGDSWGetSubdomainSize_C", (PC, PetscInt *), (pc, n));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWSetOverlap - Sets the number of layers of the matrix graph `PCGDSW` adds to each subdomain
+
+   Logically Collective on pc
+
+   Input Parameters:
++  pc - the preconditioner context
+-  k - the number of layers, 0 or more (default 1)
+
+   Options Database Key:
+.  -pc_gdsw_overlap <k> - sets the overlap
+
+   Notes:
+   Not used when `PCGDSWSetSubdomains()` gave overlapping subdomains. For Q1 elements one layer of the graph is one layer of elements.
+   A new value makes the next `PCSetUp()` rebuild the preconditioner.
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWGetOverlap()`, `PCGDSWSetSubdomains()`, `PCGDSWGetSubdomains()`, `MatIncreaseOverlap()`
+@*/
+PetscErrorCode PCGDSWSetOverlap(PC pc, PetscInt k)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidLogicalCollectiveInt(pc, k, 2);
+  PetscTryMethod(pc, "PCGDSWSetOverlap_C", (PC, PetscInt), (pc, k));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetOverlap - Gets the number of layers of the matrix graph `PCGDSW` adds to each subdomain
+
+   Not Collective
+
+   Input Parameter:
+.  pc - the preconditioner context
+
+   Output Parameter:
+.  k - the number of layers
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWSetOverlap()`
+@*/
+PetscErrorCode PCGDSWGetOverlap(PC pc, PetscInt *k)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidIntPointer(k, 2);
+  PetscUseMethod(pc, "PCGDSWGetOverlap_C", (PC, PetscInt *), (pc, k));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWSetCoarseSpaceType - Sets the coarse space of `PCGDSW`
+
+   Logically Collective on pc
+
+   Input Parameters:
++  pc - the preconditioner context
+-  type - `PC_GDSW_COARSE_GDSW` (the default: the null space on every face, edge and vertex), `PC_GDSW_COARSE_RGDSW` (reduced dimension: the null space on the coarse nodes, spread by a partition of unity) or `PC_GDSW_COARSE_NONE` (one-level Schwarz)
+
+   Options Database Key:
+.  -pc_gdsw_coarse_space <gdsw,rgdsw,none> - sets the type
+
+   Note:
+   A new value makes the next `PCSetUp()` rebuild the preconditioner.
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWCoarseSpaceType`, `PCGDSWGetCoarseSpaceType()`, `PCGDSWSetRGDSWWeightType()`, `PCGDSWSetRotations()`
+@*/
+PetscErrorCode PCGDSWSetCoarseSpaceType(PC pc, PCGDSWCoarseSpaceType type)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidLogicalCollectiveEnum(pc, type, 2);
+  PetscTryMethod(pc, "PCGDSWSetCoarseSpaceType_C", (PC, PCGDSWCoarseSpaceType), (pc, type));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetCoarseSpaceType - Gets the coarse space of `PCGDSW`
+
+   Not Collective
+
+   Input Parameter:
+.  pc - the preconditioner context
+
+   Output Parameter:
+.  type - the coarse space
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWSetCoarseSpaceType()`
+@*/
+PetscErrorCode PCGDSWGetCoarseSpaceType(PC pc, PCGDSWCoarseSpaceType *type)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidPointer(type, 2);
+  PetscUseMethod(pc, "PCGDSWGetCoarseSpaceType_C", (PC, PCGDSWCoarseSpaceType *), (pc, type));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWSetRGDSWWeightType - Sets the partition of unity of the RGDSW coarse space of `PCGDSW` on an interface component shared by several coarse nodes
+
+   Logically Collective on pc
+
+   Input Parameters:
++  pc - the preconditioner context
+-  type - `PC_GDSW_RGDSW_WEIGHTS_DISTANCE` (the default; option 2.2 of Dohrmann and Widlund: shares proportional to 1 / distance to each coarse node's centroid) or `PC_GDSW_RGDSW_WEIGHTS_EQUAL` (option 1: equal shares)
+
+   Options Database Key:
+.  -pc_gdsw_rgdsw_weights <distance,equal> - sets the type
+
+   Notes:
+   The distances are measured between the coordinates from which the rigid-body modes are built, so the distance weights need `PCSetCoordinates()` and no near-null space on the operator (`MatSetNearNullSpace()`), with rotations on.
+   Otherwise RGDSW uses equal shares, and `-ksp_view` says so.
+   A new value makes the next `PCSetUp()` rebuild the preconditioner.
+
+   Level: advanced
+
+.seealso: `PCGDSW`, `PCGDSWRGDSWWeightType`, `PCGDSWGetRGDSWWeightType()`, `PCGDSWSetCoarseSpaceType()`, `PCSetCoordinates()`
+@*/
+PetscErrorCode PCGDSWSetRGDSWWeightType(PC pc, PCGDSWRGDSWWeightType type)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidLogicalCollectiveEnum(pc, type, 2);
+  PetscTryMethod(pc, "PCGDSWSetRGDSWWeightType_C", (PC, PCGDSWRGDSWWeightType), (pc, type));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetRGDSWWeightType - Gets the requested partition of unity of the RGDSW coarse space of `PCGDSW`
+
+   Not Collective
+
+   Input Parameter:
+.  pc - the preconditioner context
+
+   Output Parameter:
+.  type - the partition of unity requested (see `PCGDSWSetRGDSWWeightType()` for when equal shares replace the distance weights)
+
+   Level: advanced
+
+.seealso: `PCGDSW`, `PCGDSWSetRGDSWWeightType()`
+@*/
+PetscErrorCode PCGDSWGetRGDSWWeightType(PC pc, PCGDSWRGDSWWeightType *type)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidPointer(type, 2);
+  PetscUseMethod(pc, "PCGDSWGetRGDSWWeightType_C", (PC, PCGDSWRGDSWWeightType *), (pc, type));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWSetRotations - Sets whether the coarse space of `PCGDSW` uses the rotations of the null space
+
+   Logically Collective on pc
+
+   Input Parameters:
++  pc - the preconditioner context
+-  flg - `PETSC_TRUE` (the default) for the whole null space, `PETSC_FALSE` for translations only (GDSW-nr)
+
+   Options Database Key:
+.  -pc_gdsw_rotations <true,false> - sets the flag
+
+   Note:
+   A new value makes the next `PCSetUp()` rebuild the preconditioner.
+
+   Level: advanced
+
+.seealso: `PCGDSW`, `PCGDSWGetRotations()`, `PCGDSWSetCoarseSpaceType()`, `PCSetCoordinates()`, `MatSetNearNullSpace()`
+@*/
+PetscErrorCode PCGDSWSetRotations(PC pc, PetscBool flg)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidLogicalCollectiveBool(pc, flg, 2);
+  PetscTryMethod(pc, "PCGDSWSetRotations_C", (PC, PetscBool), (pc, flg));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetRotations - Gets whether the coarse space of `PCGDSW` uses the rotations of the null space
+
+   Not Collective
+
+   Input Parameter:
+.  pc - the preconditioner context
+
+   Output Parameter:
+.  flg - the flag
+
+   Level: advanced
+
+.seealso: `PCGDSW`, `PCGDSWSetRotations()`
+@*/
+PetscErrorCode PCGDSWGetRotations(PC pc, PetscBool *flg)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidBoolPointer(flg, 2);
+  PetscUseMethod(pc, "PCGDSWGetRotations_C", (PC, PetscBool *), (pc, flg));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWSetCombinationType - Sets how `PCGDSW` combines its coarse and local corrections
+
+   Logically Collective on pc
+
+   Input Parameters:
++  pc - the preconditioner context
+-  type - `PC_GDSW_ADDITIVE` (the default, symmetric: Phi A_0^{-1} Phi^T + sum_i R_i^T A_i^{-1} R_i) or `PC_GDSW_MULTIPLICATIVE` (the coarse correction first, then the local solves on the updated residual; nonsymmetric, one more product with the operator)
+
+   Options Database Key:
+.  -pc_gdsw_combination <additive,multiplicative> - sets the type
+
+   Note:
+   A new value makes the next `PCSetUp()` rebuild the preconditioner.
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWCombinationType`, `PCGDSWGetCombinationType()`, `PCGDSWSetFirstLevelType()`
+@*/
+PetscErrorCode PCGDSWSetCombinationType(PC pc, PCGDSWCombinationType type)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidLogicalCollectiveEnum(pc, type, 2);
+  PetscTryMethod(pc, "PCGDSWSetCombinationType_C", (PC, PCGDSWCombinationType), (pc, type));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetCombinationType - Gets how `PCGDSW` combines its coarse and local corrections
+
+   Not Collective
+
+   Input Parameter:
+.  pc - the preconditioner context
+
+   Output Parameter:
+.  type - the combination
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWSetCombinationType()`
+@*/
+PetscErrorCode PCGDSWGetCombinationType(PC pc, PCGDSWCombinationType *type)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidPointer(type, 2);
+  PetscUseMethod(pc, "PCGDSWGetCombinationType_C", (PC, PCGDSWCombinationType *), (pc, type));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWSetFirstLevelType - Sets how `PCGDSW` prolongates its local corrections
+
+   Logically Collective on pc
+
+   Input Parameters:
++  pc - the preconditioner context
+-  type - `PC_GDSW_FIRST_LEVEL_ADDITIVE` (the default, symmetric: R_i^T on the whole overlapping subdomain) or `PC_GDSW_FIRST_LEVEL_RESTRICTED` (RAS: each dof from the one subdomain of smallest number that holds it in its nonoverlapping part; nonsymmetric)
+
+   Options Database Key:
+.  -pc_gdsw_first_level_type <additive,restricted> - sets the type
+
+   Note:
+   A new value makes the next `PCSetUp()` rebuild the preconditioner.
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWFirstLevelType`, `PCGDSWGetFirstLevelType()`, `PCGDSWSetCombinationType()`, `PCASMSetType()`
+@*/
+PetscErrorCode PCGDSWSetFirstLevelType(PC pc, PCGDSWFirstLevelType type)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidLogicalCollectiveEnum(pc, type, 2);
+  PetscTryMethod(pc, "PCGDSWSetFirstLevelType_C", (PC, PCGDSWFirstLevelType), (pc, type));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetFirstLevelType - Gets how `PCGDSW` prolongates its local corrections
+
+   Not Collective
+
+   Input Parameter:
+.  pc - the preconditioner context
+
+   Output Parameter:
+.  type - the first level's type
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWSetFirstLevelType()`
+@*/
+PetscErrorCode PCGDSWGetFirstLevelType(PC pc, PCGDSWFirstLevelType *type)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidPointer(type, 2);
+  PetscUseMethod(pc, "PCGDSWGetFirstLevelType_C", (PC, PCGDSWFirstLevelType *), (pc, type));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWSetReuseCoarseBasis - Sets whether `PCGDSW` keeps its coarse basis Phi when the operator's values change with the same nonzero pattern
+
+   Logically Collective on pc
+
+   Input Parameters:
++  pc - the preconditioner context
+-  flg - `PETSC_TRUE` to keep Phi and recompute only A_0 = Phi^T A Phi, `PETSC_FALSE` (the default) to re-extend Phi with the new values
+
+   Options Database Key:
+.  -pc_gdsw_reuse_coarse_basis <true,false> - sets the flag
+
+   Note:
+   A kept basis saves the interior factorisations of the harmonic extension at the price of iterations when the operator changes much.
+
+   Level: advanced
+
+.seealso: `PCGDSW`, `PCGDSWGetReuseCoarseBasis()`, `PCSetReusePreconditioner()`
+@*/
+PetscErrorCode PCGDSWSetReuseCoarseBasis(PC pc, PetscBool flg)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidLogicalCollectiveBool(pc, flg, 2);
+  PetscTryMethod(pc, "PCGDSWSetReuseCoarseBasis_C", (PC, PetscBool), (pc, flg));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetReuseCoarseBasis - Gets whether `PCGDSW` keeps its coarse basis when the operator's values change
+
+   Not Collective
+
+   Input Parameter:
+.  pc - the preconditioner context
+
+   Output Parameter:
+.  flg - the flag
+
+   Level: advanced
+
+.seealso: `PCGDSW`, `PCGDSWSetReuseCoarseBasis()`
+@*/
+PetscErrorCode PCGDSWGetReuseCoarseBasis(PC pc, PetscBool *flg)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidBoolPointer(flg, 2);
+  PetscUseMethod(pc, "PCGDSWGetReuseCoarseBasis_C", (PC, PetscBool *), (pc, flg));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetCoarseBasis - Gets the coarse basis Phi of `PCGDSW` (global dofs x coarse dofs)
+
+   Not Collective, but the matrix is parallel
+
+   Input Parameter:
+.  pc - the preconditioner context, set up
+
+   Output Parameter:
+.  Phi - the coarse basis, or NULL when there is no coarse level (type none, or no interface)
+
+   Note:
+   A borrowed reference, valid until the next `PCSetUp()`.
+
+   Level: advanced
+
+.seealso: `PCGDSW`, `PCGDSWGetCoarseOperator()`, `PCGDSWGetCoarseKSP()`, `PCGDSWGetInterfaceCounts()`
+@*/
+PetscErrorCode PCGDSWGetCoarseBasis(PC pc, Mat *Phi)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidPointer(Phi, 2);
+  PetscUseMethod(pc, "PCGDSWGetCoarseBasis_C", (PC, Mat *), (pc, Phi));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetCoarseOperator - Gets the coarse operator A_0 = Phi^T A Phi of `PCGDSW`
+
+   Not Collective, but the matrix is parallel
+
+   Input Parameter:
+.  pc - the preconditioner context, set up
+
+   Output Parameter:
+.  A0 - the coarse operator, or NULL when there is no coarse level
+
+   Note:
+   A borrowed reference, valid until the next `PCSetUp()`.
+
+   Level: advanced
+
+.seealso: `PCGDSW`, `PCGDSWGetCoarseBasis()`, `PCGDSWGetCoarseKSP()`
+@*/
+PetscErrorCode PCGDSWGetCoarseOperator(PC pc, Mat *A0)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidPointer(A0, 2);
+  PetscUseMethod(pc, "PCGDSWGetCoarseOperator_C", (PC, Mat *), (pc, A0));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetCoarseKSP - Gets the solver of the coarse problem of `PCGDSW`
+
+   Not Collective, but the `KSP` is parallel
+
+   Input Parameter:
+.  pc - the preconditioner context, set up
+
+   Output Parameter:
+.  ksp - the coarse solver, with the options prefix -pc_gdsw_coarse_ (after the `PC`'s own), or NULL when there is no coarse level
+
+   Note:
+   A borrowed reference, valid until the next `PCSetUp()` that rebuilds the preconditioner.
+
+   Level: advanced
+
+.seealso: `PCGDSW`, `PCGDSWGetCoarseOperator()`, `PCGDSWGetCoarseBasis()`
+@*/
+PetscErrorCode PCGDSWGetCoarseKSP(PC pc, KSP *ksp)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidPointer(ksp, 2);
+  PetscUseMethod(pc, "PCGDSWGetCoarseKSP_C", (PC, KSP *), (pc, ksp));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetInterfaceCounts - Gets the numbers of interface components of `PCGDSW`, over all ranks
+
+   Not Collective
+
+   Input Parameter:
+.  pc - the preconditioner context, set up
+
+   Output Parameters:
++  faces - components shared by two subdomains, or NULL
+.  edges - components of more than one node shared by three or more subdomains, or NULL
+-  vertices - single nodes shared by three or more subdomains, or NULL
+
+   Level: advanced
+
+.seealso: `PCGDSW`, `PCGDSWGetCoarseBasis()`
+@*/
+PetscErrorCode PCGDSWGetInterfaceCounts(PC pc, PetscInt *faces, PetscInt *edges, PetscInt *vertices)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscUseMethod(pc, "PCGDSWGetInterfaceCounts_C", (PC, PetscInt *, PetscInt *, PetscInt *), (pc, faces, edges, vertices));
+  PetscFunctionReturn(0);
+}
+
+static PetscBool GDSWRegistered = PETSC_FALSE;
+
+/* PetscFinalize() empties PETSc's list of PC types: a later PetscInitialize() registers again. */
+static PetscErrorCode PCGDSWFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  GDSWRegistered = PETSC_FALSE;
+  PetscFunctionReturn(0);
+}
+
+/*@C
+   PCGDSWRegister - Registers the preconditioner type `PCGDSW` ("gdsw") and its log events
+
+   Not Collective
+
+   Notes:
+   Call it after `PetscInitialize()` in a program linked with the library; loading the library
+   with -dll_append calls it too. Further calls do nothing until `PetscFinalize()`.
+
+   Level: beginner
+
+.seealso: `PCGDSW`, `PCRegister()`, `PetscDLLibraryAppend()`
+@*/
 PetscErrorCode PCGDSWRegister(void)
 {
-  static PetscBool registered = PETSC_FALSE;
-
   PetscFunctionBegin;
-  if (registered) PetscFunctionReturn(0);
-  registered = PETSC_TRUE;
+  if (GDSWRegistered) PetscFunctionReturn(0);
+  GDSWRegistered = PETSC_TRUE;
   PetscCall(PCRegister(PCGDSW, PCCreate_GDSW));
   PetscCall(PetscLogEventRegister("GDSWDecomp", PC_CLASSID, &GDSW_Decomposition));
   PetscCall(PetscLogEventRegister("GDSWInterface", PC_CLASSID, &GDSW_Interface));
@@ -544,6 +1531,7 @@ PetscErrorCode PCGDSWRegister(void)
   PetscCall(PetscLogEventRegister("GDSWCoarseSetUp", PC_CLASSID, &GDSW_CoarseSetUp));
   PetscCall(PetscLogEventRegister("GDSWLocalFactor", PC_CLASSID, &GDSW_LocalFactor));
   PetscCall(PetscLogEventRegister("GDSWApply", PC_CLASSID, &GDSW_Apply));
+  PetscCall(PetscRegisterFinalize(PCGDSWFinalizePackage));
   PetscFunctionReturn(0);
 }
 

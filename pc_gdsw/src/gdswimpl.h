@@ -5,7 +5,7 @@
      coarse_operator.cxx A_0 = Phi^T A Phi
      coarse_solver.cxx  the solver of A_0
      first_level.cxx    local solvers on Omega_i^delta and their restriction/prolongation
-     gdsw.cxx           the PC object: options, setup order, apply, view */
+     gdsw.cxx           the PC object: options, setup order, apply and its transpose, view, public API */
 #pragma once
 
 #include <petscgdsw.h>
@@ -83,6 +83,7 @@ typedef struct {
   std::vector<gdsw::Subdomain> *sub;
   std::vector<std::vector<PetscInt>> *sets; /* distinct sharing sets seen on this rank */
   PetscInt  nGlobalSubdomains;
+  IS       *nonArr, *ovlArr;              /* the subdomains' index sets as arrays, for PCGDSWGetSubdomains() */
   PetscInt  nsubRank0;                    /* subdomains on rank 0, for the view */
   PetscSF   nodeSF;                       /* leaves: nodes of every local Omega~_i; roots: owned nodes */
   PetscInt  nDirichletRows;               /* global count */

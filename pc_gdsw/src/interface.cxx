@@ -159,9 +159,17 @@ static PetscReal Weight(const PC_GDSW *gd, const Subdomain &s, PetscInt a, const
   return inverseDistance(v) / sum;
 }
 
+/* Whether coarse node w takes in component c: c itself, or a component whose sharing set strictly
+   contains c's. Pieces of an interface with the same sharing set (a face the matrix graph splits)
+   stay separate coarse nodes: taking in each other's nodes would make their columns equal. */
+static bool IsAncestor(const CoarseGroup &w, const CoarseGroup &c)
+{
+  return w.rep == c.rep || (w.sharing.size() > c.sharing.size() && Includes(w.sharing, c.sharing));
+}
+
 /* RGDSW: the coarse nodes are the components no other component's sharing set strictly
-   contains; each interface node is shared among the coarse nodes whose sharing set contains
-   its own, with the weights above. */
+   contains; each interface node is shared among the coarse nodes that take in its component,
+   with the weights above. */
 static void ReduceToCoarseNodes(const PC_GDSW *gd, const Subdomain &s, std::vector<CoarseGroup> &comps)
 {
   std::vector<CoarseGroup> nodes;
@@ -175,9 +183,9 @@ static void ReduceToCoarseNodes(const PC_GDSW *gd, const Subdomain &s, std::vect
   for (const auto &c : comps) {
     std::vector<const CoarseGroup *> ancestors;
     for (const auto &w : nodes)
-      if (Includes(w.sharing, c.sharing)) ancestors.push_back(&w);
+      if (IsAncestor(w, c)) ancestors.push_back(&w);
     for (auto &v : nodes) {
-      if (!Includes(v.sharing, c.sharing)) continue;
+      if (!IsAncestor(v, c)) continue;
       for (PetscInt a : c.support) {
         v.support.push_back(a);
         v.weight.push_back(Weight(gd, s, a, v, ancestors));

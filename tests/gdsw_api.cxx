@@ -1,0 +1,228 @@
+static const char help[] = "Exercises PCGDSW's API on a nonsymmetric problem: upwind convection-diffusion\n"
+                           "-Laplace(u) + beta (1, 1/2) . grad(u) = 1 on the unit square, zero on its boundary, n x n interior nodes.\n"
+                           "  -case transpose  <P^T x, y> = <x, P y> for random x, y; GMRES with KSPSolve and KSPSolveTranspose\n"
+                           "  -case setters    a solve, then the setter named by -set changes its parameter, and a second solve\n"
+                           "  -set <overlap>   subdomains (4 per rank), subdomain_size (200), overlap (2), coarse_space (none),\n"
+                           "                   combination (multiplicative) or first_level_type (restricted)\n"
+                           "  -n <32> -beta <20>  grid and wind speed\n"
+                           "  -rounds <1>      run the case this many times, each between its own PetscInitialize() and PetscFinalize()\n"
+                           "Every case prints the PC's settings as its getters return them.\n";
+
+#include <petscgdsw.h>
+#include <string>
+
+/* h^2 times the upwind difference operator (wind beta (1, 1/2) > 0: backward differences). */
+static PetscErrorCode ConvectionDiffusion(PetscInt n, PetscReal beta, Mat *A)
+{
+  const PetscReal h = 1.0 / (n + 1), bx = beta * h, by = 0.5 * beta * h;
+  PetscInt        rstart, rend;
+
+  PetscFunctionBegin;
+  PetscCall(MatCreateAIJ(PETSC_COMM_WORLD, PETSC_DECIDE, PETSC_DECIDE, n * n, n * n, 5, nullptr, 4, nullptr, A));
+  PetscCall(MatGetOwnershipRange(*A, &rstart, &rend));
+  for (PetscInt r = rstart; r < rend; r++) {
+    const PetscInt i = r % n, j = r / n;
+    PetscCall(MatSetValue(*A, r, r, 4.0 + bx + by, INSERT_VALUES));
+    if (i > 0) PetscCall(MatSetValue(*A, r, r - 1, -1.0 - bx, INSERT_VALUES));
+    if (i < n - 1) PetscCall(MatSetValue(*A, r, r + 1, -1.0, INSERT_VALUES));
+    if (j > 0) PetscCall(MatSetValue(*A, r, r - n, -1.0 - by, INSERT_VALUES));
+    if (j < n - 1) PetscCall(MatSetValue(*A, r, r + n, -1.0, INSERT_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(*A, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*A, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+/* The settings as the getters see them. */
+static PetscErrorCode PrintSettings(PC pc)
+{
+  PetscInt              nsub, size, overlap;
+  PCGDSWCoarseSpaceType coarse;
+  PCGDSWRGDSWWeightType weights;
+  PCGDSWCombinationType combination;
+  PCGDSWFirstLevelType  first;
+  PetscBool             rotations, reuse;
+
+  PetscFunctionBegin;
+  PetscCall(PCGDSWGetSubdomainsPerRank(pc, &nsub));
+  PetscCall(PCGDSWGetSubdomainSize(pc, &size));
+  PetscCall(PCGDSWGetOverlap(pc, &overlap));
+  PetscCall(PCGDSWGetCoarseSpaceType(pc, &coarse));
+  PetscCall(PCGDSWGetRGDSWWeightType(pc, &weights));
+  PetscCall(PCGDSWGetRotations(pc, &rotations));
+  PetscCall(PCGDSWGetCombinationType(pc, &combination));
+  PetscCall(PCGDSWGetFirstLevelType(pc, &first));
+  PetscCall(PCGDSWGetReuseCoarseBasis(pc, &reuse));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "settings: subdomains %" PetscInt_FMT " subdomain_size %" PetscInt_FMT " overlap %" PetscInt_FMT " coarse_space %s rgdsw_weights %s rotations %d combination %s first_level_type %s reuse_coarse_basis %d\n",
+                        nsub, size, overlap, PCGDSWCoarseSpaceTypes[coarse], PCGDSWRGDSWWeightTypes[weights], (int)rotations, PCGDSWCombinationTypes[combination], PCGDSWFirstLevelTypes[first], (int)reuse));
+  PetscFunctionReturn(0);
+}
+
+/* One line per solve: iterations, reason, the true residual of A x = b (or A^T x = b), and the
+   size of the decomposition (dofs of all overlapping subdomains) and of the coarse space. */
+static PetscErrorCode Solve(KSP ksp, PetscBool transpose, const char *what)
+{
+  Mat                A, Phi;
+  PC                 pc;
+  Vec                b, x, r;
+  PetscInt           its, nsub, ovlDofs = 0, total, coarse = 0;
+  IS                *ovl;
+  PetscReal          nr, nb;
+  KSPConvergedReason reason;
+
+  PetscFunctionBegin;
+  PetscCall(KSPGetOperators(ksp, &A, nullptr));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(MatCreateVecs(A, &x, &b));
+  PetscCall(VecDuplicate(b, &r));
+  PetscCall(VecSet(b, 1.0));
+  if (transpose) PetscCall(KSPSolveTranspose(ksp, b, x));
+  else PetscCall(KSPSolve(ksp, b, x));
+  PetscCall(KSPGetIterationNumber(ksp, &its));
+  PetscCall(KSPGetConvergedReason(ksp, &reason));
+  if (transpose) PetscCall(MatMultTranspose(A, x, r));
+  else PetscCall(MatMult(A, x, r));
+  PetscCall(VecAYPX(r, -1.0, b));
+  PetscCall(VecNorm(r, NORM_2, &nr));
+  PetscCall(VecNorm(b, NORM_2, &nb));
+  PetscCall(PCGDSWGetSubdomains(pc, &nsub, nullptr, &ovl));
+  for (PetscInt i = 0; i < nsub; i++) {
+    PetscInt m;
+    PetscCall(ISGetLocalSize(ovl[i], &m));
+    ovlDofs += m;
+  }
+  PetscCallMPI(MPIU_Allreduce(&ovlDofs, &total, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
+  PetscCall(PCGDSWGetCoarseBasis(pc, &Phi));
+  if (Phi) PetscCall(MatGetSize(Phi, nullptr, &coarse));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s: iterations %" PetscInt_FMT " reason %s residual %.3e overlap_dofs %" PetscInt_FMT " coarse %" PetscInt_FMT "\n", what, its, KSPConvergedReasons[reason], (double)(nr / nb), total, coarse));
+  PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&b));
+  PetscCall(VecDestroy(&r));
+  PetscFunctionReturn(0);
+}
+
+/* max over random pairs of |<P^T x, y> - <x, P y>| / (|x| |P y|), and how far P is from
+   symmetric (|P^T x - P x| / |P x|), so that the first is not trivially small. */
+static PetscErrorCode CheckAdjoint(PC pc, Mat A)
+{
+  Vec         x, y, Py, PTx, Px;
+  PetscRandom rnd;
+  PetscReal   worst = 0, asym = 0;
+
+  PetscFunctionBegin;
+  PetscCall(MatCreateVecs(A, &x, &y));
+  PetscCall(VecDuplicate(x, &Py));
+  PetscCall(VecDuplicate(x, &PTx));
+  PetscCall(VecDuplicate(x, &Px));
+  PetscCall(PetscRandomCreate(PETSC_COMM_WORLD, &rnd));
+  PetscCall(PetscRandomSetInterval(rnd, -1.0, 1.0));
+  for (int k = 0; k < 3; k++) {
+    PetscScalar a, b;
+    PetscReal   nx, nPy, nPx, nd;
+    PetscCall(VecSetRandom(x, rnd));
+    PetscCall(VecSetRandom(y, rnd));
+    PetscCall(PCApply(pc, y, Py));
+    PetscCall(PCApplyTranspose(pc, x, PTx));
+    PetscCall(VecDot(PTx, y, &a));
+    PetscCall(VecDot(x, Py, &b));
+    PetscCall(VecNorm(x, NORM_2, &nx));
+    PetscCall(VecNorm(Py, NORM_2, &nPy));
+    worst = PetscMax(worst, PetscAbsScalar(a - b) / (nx * nPy));
+    PetscCall(PCApply(pc, x, Px));
+    PetscCall(VecNorm(Px, NORM_2, &nPx));
+    PetscCall(VecAXPY(Px, -1.0, PTx));
+    PetscCall(VecNorm(Px, NORM_2, &nd));
+    asym = PetscMax(asym, nd / nPx);
+  }
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "adjoint: max relative error %.3e asymmetry %.3e\n", (double)worst, (double)asym));
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&y));
+  PetscCall(VecDestroy(&Py));
+  PetscCall(VecDestroy(&PTx));
+  PetscCall(VecDestroy(&Px));
+  PetscFunctionReturn(0);
+}
+
+/* The setter -set names, with a value other than the default. */
+static PetscErrorCode ChangeOne(PC pc)
+{
+  char name[64] = "overlap";
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-set", name, sizeof(name), nullptr));
+  const std::string what = name;
+  if (what == "subdomains") PetscCall(PCGDSWSetSubdomainsPerRank(pc, 4));
+  else if (what == "subdomain_size") PetscCall(PCGDSWSetSubdomainSize(pc, 200));
+  else if (what == "overlap") PetscCall(PCGDSWSetOverlap(pc, 2));
+  else if (what == "coarse_space") PetscCall(PCGDSWSetCoarseSpaceType(pc, PC_GDSW_COARSE_NONE));
+  else if (what == "combination") PetscCall(PCGDSWSetCombinationType(pc, PC_GDSW_MULTIPLICATIVE));
+  else if (what == "first_level_type") PetscCall(PCGDSWSetFirstLevelType(pc, PC_GDSW_FIRST_LEVEL_RESTRICTED));
+  else SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-set %s is not one of the setters listed by -help", name);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Run(const std::string &c)
+{
+  PetscInt  n    = 32;
+  PetscReal beta = 20;
+  Mat       A;
+  KSP       ksp;
+  PC        pc;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-n", &n, nullptr));
+  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-beta", &beta, nullptr));
+  PetscCall(PCGDSWRegister());
+  PetscCall(ConvectionDiffusion(n, beta, &A));
+  PetscCall(KSPCreate(PETSC_COMM_WORLD, &ksp));
+  PetscCall(KSPSetOperators(ksp, A, A));
+  PetscCall(KSPSetType(ksp, KSPGMRES));
+  PetscCall(KSPSetPCSide(ksp, PC_RIGHT)); /* the convergence test sees the true residual */
+  PetscCall(KSPSetTolerances(ksp, 1e-8, PETSC_DEFAULT, PETSC_DEFAULT, 500));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCGDSW));
+  PetscCall(KSPSetFromOptions(ksp));
+  PetscCall(PrintSettings(pc));
+  PetscCall(KSPSetUp(ksp));
+  if (c == "transpose") {
+    PetscCall(CheckAdjoint(pc, A));
+    PetscCall(Solve(ksp, PETSC_FALSE, "forward"));
+    PetscCall(Solve(ksp, PETSC_TRUE, "transpose"));
+  } else if (c == "setters") {
+    PetscCall(Solve(ksp, PETSC_FALSE, "first"));
+    PetscCall(ChangeOne(pc));
+    PetscCall(PrintSettings(pc));
+    PetscCall(Solve(ksp, PETSC_FALSE, "second"));
+  } else SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-case %s is not one of the cases listed by -help", c.c_str());
+  PetscCall(KSPDestroy(&ksp));
+  PetscCall(MatDestroy(&A));
+  PetscFunctionReturn(0);
+}
+
+int main(int argc, char **argv)
+{
+  PetscInt rounds = 1;
+
+  PetscCallMPI(MPI_Init(&argc, &argv)); /* MPI outlives each PETSc round */
+  for (PetscInt round = 0; round < rounds; round++) {
+    char name[64] = "transpose";
+    PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
+    PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-rounds", &rounds, nullptr));
+    PetscCall(PetscOptionsGetString(nullptr, nullptr, "-case", name, sizeof(name), nullptr));
+    PetscCall(Run(name));
+    PetscCall(PetscFinalize());
+  }
+  PetscCallMPI(MPI_Finalize());
+  return 0;
+}
+
+/*TEST
+
+   # PETSc test-harness format (config/testparse.py); run with scripts/petsc-harness.
+   test:
+      suffix: transpose
+      nsize: 2
+      args: -case transpose -pc_gdsw_subdomains 4
+
+TEST*/
