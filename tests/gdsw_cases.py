@@ -30,6 +30,42 @@ def elasticity(*opts, np=1):
     return rows[-1] if len(rows) == 1 else rows
 
 
+# ---- numerical robustness and parity with PETSc's GDSW -------------------------------------------
+FSI_APP = os.path.join(BUILD, "fsi_app", "fsi_app")
+LOCAL_SOLVERS = (("cholesky", "cholmod"), ("cholesky", "petsc"), ("lu", "umfpack"), ("lu", "petsc"), ("lu", "mumps"))
+
+
+@case
+def singular_subdomain():
+    """ex2's 2D Laplacian with row and column 100 zeroed, GMRES, 3 subdomains per rank: the
+    interior solve of the extension and (with no coarse level) the overlapping subdomain solve
+    stop with a sentence naming the subdomain's matrix and dof 100, whichever local solver is
+    chosen (UMFPACK only warns: the factor's solve gives Inf/NaN), instead of DIVERGED_NANORINF."""
+    for np in (1, 3):
+        for prefix, opts, what in (("extension", [], "interior"), ("sub", ["-pc_gdsw_coarse_space", "none"], "overlapping")):
+            for t, s in ((None, None),) + LOCAL_SOLVERS:
+                solver = [f"-pc_gdsw_{prefix}_pc_type", t, f"-pc_gdsw_{prefix}_pc_factor_mat_solver_type", s] if t else []
+                out = run([BAD_INPUT, "-case", "zero_row_2d", "-pc_gdsw_subdomains", 3, "-ksp_converged_reason"] + opts + solver, np, fail=True)
+                assert re.search(rf"PCGDSW: the {what} matrix of subdomain \d+ \(\d+ dofs\) could not be factored \(FACTOR_NUMERIC_ZEROPIVOT\): "
+                                 r"the operator is singular there, its row of global dof 100 is zero", out), (np, what, t, s)
+                assert "DIVERGED" not in out and "Segmentation" not in out
+
+
+@case
+def indefinite_quiet():
+    """The Stokes saddle point of fsi_app's Poiseuille scene (zero pressure block) with gdsw, 8
+    subdomains on 2 ranks: no Cholesky attempt and no CHOLMOD warning; -ksp_view says every
+    local matrix was factored by LU instead of Cholesky; the Newton solve converges."""
+    out = run([FSI_APP, "-options_file", "scenes/fluid_poiseuille.opts", "-pc_type", "gdsw", "-pc_gdsw_subdomain_size", 300, "-ksp_view"], 2)
+    assert "CHOLMOD warning" not in out
+    assert re.search(r"newton \d+ krylov \d+ reason CONVERGED", out)
+    fluid, pressure = (re.search(rf"unknowns per rank: .*{f} ([\d,]+)", out).group(1).split(",") for f in ("fluid", "pressure"))
+    n = sum(round((int(u) + int(p)) / 300) for u, p in zip(fluid, pressure))  # the size rule, rank by rank
+    assert f"{n} subdomains (from the matrix graph)" in out, n
+    for m in ("overlapping", "interior"):
+        assert f"local factorisations of the {m} matrices: {n} LU instead of Cholesky (not symmetric positive definite)" in out, m
+
+
 # ---- coarse space: exact dimensions and components ------------------------------------------
 BOXES = {2: (105, 12, 6, 1), 3: (528, 54, 36, 8), 4: (1485, 144, 108, 27)}
 
