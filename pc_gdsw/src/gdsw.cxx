@@ -284,7 +284,7 @@ static PetscErrorCode PCView_GDSW(PC pc, PetscViewer viewer)
   PetscBool   isIS;
   PetscCall(PetscObjectTypeCompare((PetscObject)pc->pmat, MATIS, &isIS));
   if (isIS && gd->nUser < 0) source = "from the MATIS local-to-global map";
-  if (!isIS && gd->nUser < 0) {
+  if (gd->nUser < 0) {
     if (gd->nsubPerRank == PETSC_DECIDE) PetscCall(PetscViewerASCIIPrintf(viewer, "  subdomains per rank: chosen by the size rule, about %" PetscInt_FMT " dofs each (-pc_gdsw_subdomain_size): %" PetscInt_FMT " on rank 0\n", gd->subdomainSize, gd->nsubRank0));
     else PetscCall(PetscViewerASCIIPrintf(viewer, "  subdomains per rank: %" PetscInt_FMT ", given (-pc_gdsw_subdomains)\n", gd->nsubPerRank));
   }
