@@ -1,5 +1,5 @@
 static const char help[] = "Feeds PCGDSW one kind of bad input (-case <name>) so that tests can check its error message.\n"
-                           "Cases: nonsquare, unassembled, coordinates, nullspace_length, singular, floating, partial_node, uncovered, empty_subdomain.\n";
+                           "Cases: nonsquare, unassembled, coordinates, nullspace_length, singular, zero_row_2d, floating, partial_node, uncovered, empty_subdomain.\n";
 
 /* A block-diagonal operator kron(L, I_bs), L the 1D Laplacian with n nodes (Dirichlet rows at
    both ends unless -case floating), is enough to reach each check. */
@@ -25,6 +25,27 @@ static PetscErrorCode Laplacian(PetscInt n, PetscInt bs, PetscBool dirichlet, Ma
       if (!fixed(i) && !fixed(j)) PetscCall(MatSetValue(*A, r, r + (j - i) * bs, -1.0, INSERT_VALUES));
     }
     PetscCall(MatSetValue(*A, r, r, fixed(i) ? 1.0 : (dirichlet ? 2.0 : (PetscReal)deg), INSERT_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(*A, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*A, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+/* PETSc's ksp tutorial ex2: the 5-point Laplacian on an m x m grid, Dirichlet boundary eliminated. */
+static PetscErrorCode Laplacian2D(PetscInt m, Mat *A)
+{
+  PetscInt rstart, rend;
+
+  PetscFunctionBegin;
+  PetscCall(MatCreateAIJ(PETSC_COMM_WORLD, PETSC_DECIDE, PETSC_DECIDE, m * m, m * m, 5, nullptr, 5, nullptr, A));
+  PetscCall(MatGetOwnershipRange(*A, &rstart, &rend));
+  for (PetscInt r = rstart; r < rend; r++) {
+    const PetscInt i = r / m, j = r % m;
+    if (i > 0) PetscCall(MatSetValue(*A, r, r - m, -1.0, INSERT_VALUES));
+    if (i < m - 1) PetscCall(MatSetValue(*A, r, r + m, -1.0, INSERT_VALUES));
+    if (j > 0) PetscCall(MatSetValue(*A, r, r - 1, -1.0, INSERT_VALUES));
+    if (j < m - 1) PetscCall(MatSetValue(*A, r, r + 1, -1.0, INSERT_VALUES));
+    PetscCall(MatSetValue(*A, r, r, 4.0, INSERT_VALUES));
   }
   PetscCall(MatAssemblyBegin(*A, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(*A, MAT_FINAL_ASSEMBLY));
@@ -83,6 +104,18 @@ int main(int argc, char **argv)
     PetscCall(MatZeroRowsColumns(A, 1, &mid, 0.0, nullptr, nullptr));
     PetscCall(PCSetOperators(pc, A, A));
     PetscCall(PCSetUp(pc));
+  } else if (c == "zero_row_2d") { /* row and column 100 of a 20 x 20 grid zeroed, diagonal too; GMRES */
+    PetscInt zero = 100;
+    PetscCall(Laplacian2D(20, &A));
+    PetscCall(MatZeroRowsColumns(A, 1, &zero, 0.0, nullptr, nullptr));
+    PetscCall(KSPSetOperators(ksp, A, A));
+    PetscCall(KSPSetType(ksp, KSPGMRES));
+    PetscCall(KSPSetFromOptions(ksp));
+    PetscCall(MatCreateVecs(A, &x, &b));
+    PetscCall(VecSet(b, 1.0));
+    PetscCall(KSPSolve(ksp, b, x));
+    PetscCall(VecDestroy(&x));
+    PetscCall(VecDestroy(&b));
   } else if (c == "floating") {
     PetscCall(Laplacian(n, 1, PETSC_FALSE, &A));
     PetscCall(PCSetOperators(pc, A, A));

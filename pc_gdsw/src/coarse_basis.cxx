@@ -191,7 +191,7 @@ static PetscErrorCode Extend(PC pc, Subdomain &s, MatReuse reuse)
   PetscCall(GDSWDefaultFactorSolver(ksp, nullptr, gd->symmetric));
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(KSPSetOperators(ksp, s.AII, s.AII));
-  PetscCall(GDSWSetUpLocalSolver(ksp, "interior", s.gid));
+  PetscCall(GDSWSetUpLocalSolver(pc, ksp, s, gdsw::INTERIOR));
   PetscCall(KSPMatSolve(ksp, B, s.PhiI));
   PetscCall(KSPGetPC(ksp, &ipc));
   PetscCall(PetscObjectTypeCompare((PetscObject)ksp, KSPPREONLY, &preonly));

@@ -1,7 +1,8 @@
 /* Decomposition: the nonoverlapping subdomains Omega~_i (which share their interface nodes,
    as the closures of element sets do) and the overlapping subdomains Omega_i^delta.
    Sources, in order of preference: the caller's element-based sets (PCGDSWSetSubdomains), a
-   MATIS operator's local-to-global map, or METIS on each rank's node graph. */
+   MATIS operator's local subdomains (split by METIS on their local matrix when the size rule
+   asks for more than one per rank), or METIS on each rank's node graph. */
 #include "gdswimpl.h"
 #include <petscmat.h>
 #include <metis.h>
@@ -123,6 +124,30 @@ static PetscErrorCode PartitionNodes(const LocalGraph &g, PetscInt nparts, std::
   PetscFunctionReturn(0);
 }
 
+/* How many subdomains a rank's ndofs make: -pc_gdsw_subdomains, or the size rule
+   (bench/results/gdsw_subdomains_per_rank): local solves of about subdomainSize dofs balance
+   their factorisation cost against the coarse problem's growth. */
+static PetscInt RequestedParts(const PC_GDSW *gd, PetscInt ndofs)
+{
+  if (gd->nsubPerRank != PETSC_DECIDE) return gd->nsubPerRank;
+  return std::max<PetscInt>(1, (PetscInt)std::lround((double)ndofs / gd->subdomainSize));
+}
+
+/* Number the nonempty parts 0, 1, ... (METIS may leave parts empty). */
+static PetscErrorCode DropEmptyParts(PC pc, std::vector<PetscInt> &part, PetscInt requested, PetscInt *nparts)
+{
+  std::vector<PetscInt> renum(std::max<PetscInt>(requested, (PetscInt)part.size()) + 1, -1);
+
+  PetscFunctionBegin;
+  *nparts = 0;
+  for (PetscInt &p : part) {
+    if (renum[p] < 0) renum[p] = (*nparts)++;
+    p = renum[p];
+  }
+  if (*nparts < requested) PetscCall(PetscInfo(pc, "%" PetscInt_FMT " of %" PetscInt_FMT " requested subdomains on this rank are empty and dropped\n", requested - *nparts, requested));
+  PetscFunctionReturn(0);
+}
+
 /* Algebraic subdomains: parts P_i of the owned nodes, and Omega~_i = P_i plus the neighbours
    that belong to subdomains of larger id. The interface is then one layer of nodes, shared by
    a subdomain and its lower-numbered neighbours, as with element-based subdomains. */
@@ -133,7 +158,7 @@ static PetscErrorCode AlgebraicSubdomains(PC pc, std::vector<std::vector<PetscIn
   const PetscInt bs = gd->bs;
   LocalGraph g;
   std::vector<PetscInt> part;
-  PetscInt   rstart, rend, first;
+  PetscInt   rstart, rend, first, nparts;
   MPI_Comm   comm;
 
   PetscFunctionBegin;
@@ -141,18 +166,9 @@ static PetscErrorCode AlgebraicSubdomains(PC pc, std::vector<std::vector<PetscIn
   PetscCall(MatGetOwnershipRange(A, &rstart, &rend));
   PetscCall(BuildLocalGraph(A, bs, g));
   const PetscInt nn = (rend - rstart) / bs, n0 = rstart / bs;
-  /* the size rule (bench/results/gdsw_subdomains_per_rank): local solves of about subdomainSize
-     dofs balance their factorisation cost against the coarse problem's growth */
-  const PetscInt requested = gd->nsubPerRank != PETSC_DECIDE ? gd->nsubPerRank : std::max<PetscInt>(1, (PetscInt)std::lround((double)(rend - rstart) / gd->subdomainSize));
+  const PetscInt requested = RequestedParts(gd, rend - rstart);
   PetscCall(PartitionNodes(g, requested, part));
-
-  /* drop empty parts, then number the rest globally */
-  std::vector<PetscInt> renum(std::max<PetscInt>(requested, nn) + 1, -1);
-  PetscInt nparts = 0;
-  for (PetscInt a = 0; a < nn; a++)
-    if (renum[part[a]] < 0) renum[part[a]] = nparts++;
-  for (PetscInt a = 0; a < nn; a++) part[a] = renum[part[a]];
-  if (nparts < requested) PetscCall(PetscInfo(pc, "%" PetscInt_FMT " of %" PetscInt_FMT " requested subdomains on this rank are empty and dropped\n", requested - nparts, requested));
+  PetscCall(DropEmptyParts(pc, part, requested, &nparts));
   PetscCallMPI(MPI_Scan(&nparts, &first, 1, MPIU_INT, MPI_SUM, comm));
   first -= nparts;
 
@@ -212,7 +228,72 @@ static PetscErrorCode AlgebraicSubdomains(PC pc, std::vector<std::vector<PetscIn
   PetscFunctionReturn(0);
 }
 
-/* Element-based subdomains from the caller or a MATIS local-to-global map. */
+/* A MATIS operator: each rank's subdomain (the rows of its local matrix) split like a rank's
+   rows of an AIJ operator (the size rule or -pc_gdsw_subdomains, METIS on the local matrix's node
+   graph, each part closed by its neighbours in parts of larger number), as global dof sets. The
+   rank's interface with the other ranks stays an interface: its nodes lie in subdomains of both.
+   The local rows of a node must be contiguous (MATIS from a DM); otherwise the subdomain stays
+   whole. The parts P_p (sorted global nodes) are the base of the overlap, as for an AIJ operator. */
+static PetscErrorCode MatISSubdomains(PC pc, std::vector<IS> &non, std::vector<std::vector<PetscInt>> &parts)
+{
+  PC_GDSW               *gd = (PC_GDSW *)pc->data;
+  const PetscInt         bs = gd->bs;
+  ISLocalToGlobalMapping l2g;
+  Mat                    lA, lAij;
+  PetscInt               n;
+  const PetscInt        *idx;
+  PetscBool              isAIJ;
+
+  PetscFunctionBegin;
+  PetscCall(MatISGetLocalToGlobalMapping(pc->pmat, &l2g, nullptr));
+  PetscCall(ISLocalToGlobalMappingGetSize(l2g, &n));
+  PetscCall(ISLocalToGlobalMappingGetIndices(l2g, &idx));
+  const PetscInt requested = RequestedParts(gd, n), nn = n / bs;
+  bool           nodewise  = n % bs == 0;
+  for (PetscInt a = 0; a < nn && nodewise; a++)
+    for (PetscInt c = 0; c < bs; c++) nodewise = nodewise && idx[a * bs + c] == idx[a * bs] + c && idx[a * bs] % bs == 0;
+  if (requested == 1 || !nodewise) {
+    if (requested > 1) PetscCall(PetscInfo(pc, "the MATIS subdomain of this rank is not split: the local rows of a node are not contiguous\n"));
+    non.resize(1);
+    PetscCall(ISCreateGeneral(PETSC_COMM_SELF, n, idx, PETSC_COPY_VALUES, &non[0]));
+    PetscCall(ISLocalToGlobalMappingRestoreIndices(l2g, &idx));
+    PetscFunctionReturn(0);
+  }
+  LocalGraph            g;
+  std::vector<PetscInt> part;
+  PetscInt              nparts;
+  PetscCall(MatISGetLocalMat(pc->pmat, &lA));
+  PetscCall(PetscObjectTypeCompare((PetscObject)lA, MATSEQAIJ, &isAIJ));
+  if (isAIJ) {
+    PetscCall(PetscObjectReference((PetscObject)lA));
+    lAij = lA;
+  } else PetscCall(MatConvert(lA, MATSEQAIJ, MAT_INITIAL_MATRIX, &lAij));
+  PetscCall(MatISRestoreLocalMat(pc->pmat, &lA));
+  PetscCall(BuildLocalGraph(lAij, bs, g));
+  PetscCall(MatDestroy(&lAij));
+  PetscCall(PartitionNodes(g, requested, part));
+  PetscCall(DropEmptyParts(pc, part, requested, &nparts));
+  std::vector<std::vector<PetscInt>> omega(nparts);
+  parts.assign(nparts, {});
+  for (PetscInt a = 0; a < nn; a++) {
+    parts[part[a]].push_back(idx[a * bs] / bs);
+    omega[part[a]].push_back(idx[a * bs] / bs);
+    for (PetscInt k = g.xadj[a]; k < g.xadj[a + 1]; k++)
+      if (part[g.adj[k]] > part[a]) omega[part[a]].push_back(idx[g.adj[k] * bs] / bs);
+  }
+  PetscCall(ISLocalToGlobalMappingRestoreIndices(l2g, &idx));
+  non.resize(nparts);
+  for (PetscInt p = 0; p < nparts; p++) {
+    std::sort(parts[p].begin(), parts[p].end());
+    std::sort(omega[p].begin(), omega[p].end());
+    omega[p].erase(std::unique(omega[p].begin(), omega[p].end()), omega[p].end());
+    PetscCall(DofISOfNodes(omega[p], bs, &non[p]));
+  }
+  PetscCall(PetscInfo(pc, "the MATIS subdomain of this rank (%" PetscInt_FMT " dofs) split into %" PetscInt_FMT "\n", n, nparts));
+  PetscFunctionReturn(0);
+}
+
+/* Element-based subdomains from the caller or a MATIS operator. */
 static PetscErrorCode GivenSubdomains(PC pc, PetscInt n, IS non[], std::vector<PetscInt> &origin)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
@@ -241,7 +322,7 @@ PetscErrorCode GDSWBuildDecomposition(PC pc)
 {
   PC_GDSW  *gd = (PC_GDSW *)pc->data;
   PetscBool isIS;
-  std::vector<std::vector<PetscInt>> parts; /* algebraic: the disjoint P_i, base of the overlap */
+  std::vector<std::vector<PetscInt>> parts; /* algebraic or split MATIS: the disjoint P_i, base of the overlap */
   std::vector<PetscInt> origin;             /* given: index of each kept subdomain in the input */
   MPI_Comm  comm;
 
@@ -252,18 +333,10 @@ PetscErrorCode GDSWBuildDecomposition(PC pc)
   if (haveUser) {
     PetscCall(GivenSubdomains(pc, gd->nUser, gd->userNon, origin));
   } else if (isIS) {
-    ISLocalToGlobalMapping l2g;
-    PetscInt               n;
-    const PetscInt        *idx;
-    IS                     is;
-    PetscCheck(gd->nsubPerRank == 1 || gd->nsubPerRank == PETSC_DECIDE, comm, PETSC_ERR_SUP, "PCGDSW: -pc_gdsw_subdomains %" PetscInt_FMT " is not available for a MATIS operator, whose local-to-global map defines one subdomain per rank; use 1 or an AIJ operator", gd->nsubPerRank);
-    PetscCall(MatISGetLocalToGlobalMapping(pc->pmat, &l2g, nullptr));
-    PetscCall(ISLocalToGlobalMappingGetSize(l2g, &n));
-    PetscCall(ISLocalToGlobalMappingGetIndices(l2g, &idx));
-    PetscCall(ISCreateGeneral(PETSC_COMM_SELF, n, idx, PETSC_COPY_VALUES, &is));
-    PetscCall(ISLocalToGlobalMappingRestoreIndices(l2g, &idx));
-    PetscCall(GivenSubdomains(pc, 1, &is, origin));
-    PetscCall(ISDestroy(&is));
+    std::vector<IS> non;
+    PetscCall(MatISSubdomains(pc, non, parts));
+    PetscCall(GivenSubdomains(pc, (PetscInt)non.size(), non.data(), origin));
+    for (IS &is : non) PetscCall(ISDestroy(&is));
   } else {
     PetscCall(AlgebraicSubdomains(pc, parts));
   }
@@ -273,7 +346,7 @@ PetscErrorCode GDSWBuildDecomposition(PC pc)
   PetscCallMPI(MPI_Bcast(&gd->nsubRank0, 1, MPIU_INT, 0, comm));
   PetscCheck(gd->nGlobalSubdomains > 0, comm, PETSC_ERR_ARG_WRONG, "PCGDSW: the decomposition has no nonempty subdomain");
 
-  /* overlapping subdomains: the caller's, or graph layers around P_i (algebraic) or Omega~_i */
+  /* overlapping subdomains: the caller's, or graph layers around P_i (algebraic, split MATIS) or Omega~_i */
   std::vector<IS> ovl(nloc);
   for (PetscInt i = 0; i < nloc; i++) {
     gdsw::Subdomain &s = (*gd->sub)[i];

@@ -34,46 +34,6 @@ PetscErrorCode GDSWDefaultFactorSolver(KSP ksp, MatSolverType solver, PetscBool 
   PetscFunctionReturn(0);
 }
 
-/* Set up a subdomain solver; a failed factorisation stops with a sentence, not a NaN later. A
-   Cholesky factorisation that fails (a symmetric subdomain matrix that is not positive
-   definite: a hyperelastic tangent under extreme compression; CHOLMOD raises an error rather
-   than a PC failure) is redone as LU, for this subdomain only. */
-PetscErrorCode GDSWSetUpLocalSolver(KSP ksp, const char *what, PetscInt gid)
-{
-  PC             pc;
-  PCFailedReason reason;
-  Mat            A;
-  PetscInt       n;
-  PetscBool      cholesky;
-  PetscErrorCode ierr;
-
-  PetscFunctionBegin;
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(KSPGetOperators(ksp, &A, nullptr));
-  PetscCall(MatGetSize(A, &n, nullptr));
-  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCCHOLESKY, &cholesky));
-  if (cholesky) PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
-  ierr = KSPSetUp(ksp);
-  if (cholesky) PetscCall(PetscPopErrorHandler());
-  if (!ierr) PetscCall(PCGetFailedReason(pc, &reason));
-  if (cholesky && (ierr || reason != PC_NOERROR)) {
-    PetscCall(PetscInfo(pc, "PCGDSW: Cholesky failed on the %s matrix of subdomain %" PetscInt_FMT " (%" PetscInt_FMT " dofs, not positive definite): LU instead\n", what, gid, n));
-    PetscCall(KSPReset(ksp));
-    PetscCall(KSPSetOperators(ksp, A, A));
-    PetscCall(PCSetType(pc, PCLU));
-#if defined(PETSC_HAVE_SUITESPARSE)
-    PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERUMFPACK));
-#endif
-    ierr = KSPSetUp(ksp);
-  }
-  PetscCall(ierr);
-  PetscCall(PCGetFailedReason(pc, &reason));
-  PetscCheck(reason == PC_NOERROR, PETSC_COMM_SELF, PETSC_ERR_MAT_LU_ZRPVT,
-             "PCGDSW: the %s matrix of subdomain %" PetscInt_FMT " (%" PetscInt_FMT " dofs) could not be factored (%s): the operator is singular there; try -pc_gdsw_sub_pc_factor_shift_type nonzero, or check the boundary conditions",
-             what, gid, n, PCFailedReasons[reason]);
-  PetscFunctionReturn(0);
-}
-
 /* Symmetric as flagged by the application, or up to round-off in the assembled values. With
    overlap every entry a_ij lies in some overlapping subdomain matrix with both i and j, so the
    sequential subdomain matrices decide it: MatIsSymmetric() on the parallel operator gathers
@@ -429,7 +389,7 @@ static PetscErrorCode PCView_GDSW(PC pc, PetscViewer viewer)
   PetscBool   isIS;
   PetscCall(PetscObjectTypeCompare((PetscObject)pc->pmat, MATIS, &isIS));
   if (isIS && gd->nUser < 0) source = "from the MATIS local-to-global map";
-  if (!isIS && gd->nUser < 0) {
+  if (gd->nUser < 0) {
     if (gd->nsubPerRank == PETSC_DECIDE) PetscCall(PetscViewerASCIIPrintf(viewer, "  subdomains per rank: chosen by the size rule, about %" PetscInt_FMT " dofs each (-pc_gdsw_subdomain_size): %" PetscInt_FMT " on rank 0\n", gd->subdomainSize, gd->nsubRank0));
     else PetscCall(PetscViewerASCIIPrintf(viewer, "  subdomains per rank: %" PetscInt_FMT ", given (-pc_gdsw_subdomains)\n", gd->nsubPerRank));
   }
@@ -449,6 +409,7 @@ static PetscErrorCode PCView_GDSW(PC pc, PetscViewer viewer)
     PetscCall(KSPView(gd->coarseKsp, viewer));
     PetscCall(PetscViewerASCIIPopTab(viewer));
   }
+  PetscCall(GDSWViewLocalSolvers(pc, viewer));
   /* the first local solver stands for all: they share their options */
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)pc), &rank));

@@ -17,6 +17,14 @@ namespace gdsw {
 
 enum ComponentKind { FACE = 0, EDGE = 1, VERTEX = 2 };
 
+/* The two factored matrices of a subdomain: A(Omega_i^delta) of the first level and A_II of the
+   harmonic extension. */
+enum LocalMatrix { OVERLAPPING = 0, INTERIOR = 1 };
+
+/* How a local matrix was factored, for -pc_view: LU_NOT_SPD is LU where Cholesky was asked for
+   but the matrix is not symmetric positive definite; OTHER is any other solver the options chose. */
+enum Factorisation { UNFACTORED = 0, CHOLESKY, LU, LU_NOT_SPD, OTHER };
+
 /* A group of coarse basis functions, seen from one subdomain. For GDSW it is one interface
    component; for RGDSW one coarse node whose support is every component it is an ancestor of. */
 struct CoarseGroup {
@@ -51,6 +59,7 @@ struct Subdomain {
   /* first level */
   Mat Aovl = nullptr;                   /* A(Omega_i^delta, Omega_i^delta), owned by PC_GDSW::AovlArr */
   KSP ksp = nullptr;
+  Factorisation factorisation[2] = {UNFACTORED, UNFACTORED}; /* per LocalMatrix */
   Vec x = nullptr, y = nullptr;         /* views into the work vectors (arrays placed in apply) */
   PetscInt wOffset = 0;                 /* start of its slice of the concatenated work vector */
 };
@@ -117,7 +126,8 @@ PETSC_INTERN PetscErrorCode GDSWSetUpFirstLevel(PC, MatReuse);
 PETSC_INTERN PetscErrorCode GDSWApplyFirstLevel(PC, Vec, Vec);
 PETSC_INTERN PetscErrorCode GDSWApplyCoarse(PC, Vec, Vec);
 PETSC_INTERN PetscErrorCode GDSWDefaultFactorSolver(KSP, MatSolverType, PetscBool);
-PETSC_INTERN PetscErrorCode GDSWSetUpLocalSolver(KSP, const char *, PetscInt);
+PETSC_INTERN PetscErrorCode GDSWSetUpLocalSolver(PC, KSP, gdsw::Subdomain &, gdsw::LocalMatrix);
+PETSC_INTERN PetscErrorCode GDSWViewLocalSolvers(PC, PetscViewer);
 
 PETSC_INTERN PetscLogEvent GDSW_Decomposition, GDSW_Interface, GDSW_Basis, GDSW_Extension,
   GDSW_CoarseSetUp, GDSW_LocalFactor, GDSW_Apply;
