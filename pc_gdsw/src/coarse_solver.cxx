@@ -76,13 +76,15 @@ PetscErrorCode GDSWSetUpCoarseSolver(PC pc, PetscBool basisCurrent)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode GDSWApplyCoarse(PC pc, Vec x, Vec y)
+/* y += Phi A_0^{-1} Phi^T x, or with A_0^{-T} */
+PetscErrorCode GDSWApplyCoarse(PC pc, Vec x, Vec y, PetscBool transpose)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
 
   PetscFunctionBegin;
   PetscCall(MatMultTranspose(gd->Phi, x, gd->r0));
-  PetscCall(KSPSolve(gd->coarseKsp, gd->r0, gd->x0));
+  if (transpose) PetscCall(KSPSolveTranspose(gd->coarseKsp, gd->r0, gd->x0));
+  else PetscCall(KSPSolve(gd->coarseKsp, gd->r0, gd->x0));
   PetscCall(MatMultAdd(gd->Phi, gd->x0, y, y));
   PetscFunctionReturn(0);
 }

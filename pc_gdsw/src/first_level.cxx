@@ -290,28 +290,38 @@ PetscErrorCode GDSWSetUpFirstLevel(PC pc, MatReuse reuse)
   PetscFunctionReturn(0);
 }
 
-/* y += sum_i R~_i^T A_i^{-1} R_i x */
-PetscErrorCode GDSWApplyFirstLevel(PC pc, Vec x, Vec y)
+/* y += sum_i R~_i^T A_i^{-1} R_i x, or its transpose y += sum_i R_i^T A_i^{-T} R~_i x. For the
+   restricted first level R~_i reverses the prolongation's scatter: each dof is read by the one
+   subdomain that prolongates it, and is zero in the others. */
+PetscErrorCode GDSWApplyFirstLevel(PC pc, Vec x, Vec y, PetscBool transpose)
 {
-  PC_GDSW     *gd = (PC_GDSW *)pc->data;
-  PetscScalar *w, *wo;
+  PC_GDSW        *gd         = (PC_GDSW *)pc->data;
+  const PetscBool restricted = (PetscBool)(gd->firstLevel == PC_GDSW_FIRST_LEVEL_RESTRICTED);
+  PetscScalar    *w, *wo;
 
   PetscFunctionBegin;
-  PetscCall(VecScatterBegin(gd->restrictTo, x, gd->work, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(gd->restrictTo, x, gd->work, INSERT_VALUES, SCATTER_FORWARD));
+  if (transpose && restricted) {
+    PetscCall(VecSet(gd->work, 0.0));
+    PetscCall(VecScatterBegin(gd->prolongFrom, x, gd->work, INSERT_VALUES, SCATTER_REVERSE));
+    PetscCall(VecScatterEnd(gd->prolongFrom, x, gd->work, INSERT_VALUES, SCATTER_REVERSE));
+  } else {
+    PetscCall(VecScatterBegin(gd->restrictTo, x, gd->work, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(gd->restrictTo, x, gd->work, INSERT_VALUES, SCATTER_FORWARD));
+  }
   PetscCall(VecGetArray(gd->work, &w));
   PetscCall(VecGetArray(gd->workOut, &wo));
   for (auto &s : *gd->sub) {
     PetscCall(VecPlaceArray(s.x, w + s.wOffset));
     PetscCall(VecPlaceArray(s.y, wo + s.wOffset));
-    PetscCall(KSPSolve(s.ksp, s.x, s.y));
+    if (transpose) PetscCall(KSPSolveTranspose(s.ksp, s.x, s.y));
+    else PetscCall(KSPSolve(s.ksp, s.x, s.y));
     PetscCall(KSPCheckSolve(s.ksp, pc, s.y));
     PetscCall(VecResetArray(s.x));
     PetscCall(VecResetArray(s.y));
   }
   PetscCall(VecRestoreArray(gd->work, &w));
   PetscCall(VecRestoreArray(gd->workOut, &wo));
-  if (gd->firstLevel == PC_GDSW_FIRST_LEVEL_RESTRICTED) {
+  if (!transpose && restricted) {
     PetscCall(VecScatterBegin(gd->prolongFrom, gd->workOut, y, ADD_VALUES, SCATTER_FORWARD));
     PetscCall(VecScatterEnd(gd->prolongFrom, gd->workOut, y, ADD_VALUES, SCATTER_FORWARD));
   } else {

@@ -203,90 +203,42 @@ static PetscErrorCode PCSetUp_GDSW(PC pc)
   PetscFunctionReturn(0);
 }
 
+/* Multiplicative: y = Q0 x + M1 (x - A Q0 x), transposed y = M1^T x + Q0^T (x - A^T M1^T x);
+   additive: y = M1 x + Q0 x. */
+static PetscErrorCode Apply(PC pc, Vec x, Vec y, PetscBool transpose)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(GDSW_Apply, pc, x, y, 0));
+  PetscCall(VecSet(y, 0.0));
+  if (gd->coarseActive && gd->combination == PC_GDSW_MULTIPLICATIVE) {
+    PetscErrorCode (*first)(PC, Vec, Vec, PetscBool) = transpose ? GDSWApplyFirstLevel : GDSWApplyCoarse;
+    PetscErrorCode (*second)(PC, Vec, Vec, PetscBool) = transpose ? GDSWApplyCoarse : GDSWApplyFirstLevel;
+    PetscCall(first(pc, x, y, transpose));
+    if (transpose) PetscCall(MatMultTranspose(pc->pmat, y, gd->tmp1));
+    else PetscCall(MatMult(pc->pmat, y, gd->tmp1));
+    PetscCall(VecAYPX(gd->tmp1, -1.0, x));
+    PetscCall(second(pc, gd->tmp1, y, transpose));
+  } else {
+    PetscCall(GDSWApplyFirstLevel(pc, x, y, transpose));
+    if (gd->coarseActive) PetscCall(GDSWApplyCoarse(pc, x, y, transpose));
+  }
+  PetscCall(PetscLogEventEnd(GDSW_Apply, pc, x, y, 0));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode PCApply_GDSW(PC pc, Vec x, Vec y)
 {
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
   PetscFunctionBegin;
-  PetscCall(PetscLogEventBegin(GDSW_Apply, pc, x, y, 0));
-  PetscCall(VecSet(y, 0.0));
-  const PetscBool coarse = gd->coarseActive;
-  if (coarse && gd->combination == PC_GDSW_MULTIPLICATIVE) {
-    /* y = Q0 x + M1 (x - A Q0 x) */
-    PetscCall(GDSWApplyCoarse(pc, x, y));
-    PetscCall(MatMult(pc->pmat, y, gd->tmp1));
-    PetscCall(VecAYPX(gd->tmp1, -1.0, x));
-    PetscCall(GDSWApplyFirstLevel(pc, gd->tmp1, y));
-  } else {
-    PetscCall(GDSWApplyFirstLevel(pc, x, y));
-    if (coarse) PetscCall(GDSWApplyCoarse(pc, x, y));
-  }
-  PetscCall(PetscLogEventEnd(GDSW_Apply, pc, x, y, 0));
+  PetscCall(Apply(pc, x, y, PETSC_FALSE));
   PetscFunctionReturn(0);
 }
 
-/* y += sum_i R_i^T A_i^{-T} R~_i x, the transpose of GDSWApplyFirstLevel(). For the restricted
-   first level R~_i reverses the prolongation's scatter: each dof is read by the one subdomain
-   that prolongates it, and is zero in the others. */
-static PetscErrorCode ApplyFirstLevelTranspose(PC pc, Vec x, Vec y)
-{
-  PC_GDSW     *gd = (PC_GDSW *)pc->data;
-  PetscScalar *w, *wo;
-
-  PetscFunctionBegin;
-  if (gd->firstLevel == PC_GDSW_FIRST_LEVEL_RESTRICTED) {
-    PetscCall(VecSet(gd->work, 0.0));
-    PetscCall(VecScatterBegin(gd->prolongFrom, x, gd->work, INSERT_VALUES, SCATTER_REVERSE));
-    PetscCall(VecScatterEnd(gd->prolongFrom, x, gd->work, INSERT_VALUES, SCATTER_REVERSE));
-  } else {
-    PetscCall(VecScatterBegin(gd->restrictTo, x, gd->work, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecScatterEnd(gd->restrictTo, x, gd->work, INSERT_VALUES, SCATTER_FORWARD));
-  }
-  PetscCall(VecGetArray(gd->work, &w));
-  PetscCall(VecGetArray(gd->workOut, &wo));
-  for (auto &s : *gd->sub) {
-    PetscCall(VecPlaceArray(s.x, w + s.wOffset));
-    PetscCall(VecPlaceArray(s.y, wo + s.wOffset));
-    PetscCall(KSPSolveTranspose(s.ksp, s.x, s.y));
-    PetscCall(KSPCheckSolve(s.ksp, pc, s.y));
-    PetscCall(VecResetArray(s.x));
-    PetscCall(VecResetArray(s.y));
-  }
-  PetscCall(VecRestoreArray(gd->work, &w));
-  PetscCall(VecRestoreArray(gd->workOut, &wo));
-  PetscCall(VecScatterBegin(gd->restrictTo, gd->workOut, y, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecScatterEnd(gd->restrictTo, gd->workOut, y, ADD_VALUES, SCATTER_REVERSE));
-  PetscFunctionReturn(0);
-}
-
-/* y += Phi A_0^{-T} Phi^T x */
-static PetscErrorCode ApplyCoarseTranspose(PC pc, Vec x, Vec y)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  PetscCall(MatMultTranspose(gd->Phi, x, gd->r0));
-  PetscCall(KSPSolveTranspose(gd->coarseKsp, gd->r0, gd->x0));
-  PetscCall(MatMultAdd(gd->Phi, gd->x0, y, y));
-  PetscFunctionReturn(0);
-}
-
-/* The transpose of PCApply_GDSW(), each component transposed; multiplicative:
-   y = M1^T x + Q0^T (x - A^T M1^T x). */
 static PetscErrorCode PCApplyTranspose_GDSW(PC pc, Vec x, Vec y)
 {
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
   PetscFunctionBegin;
-  PetscCall(PetscLogEventBegin(GDSW_Apply, pc, x, y, 0));
-  PetscCall(VecSet(y, 0.0));
-  PetscCall(ApplyFirstLevelTranspose(pc, x, y));
-  if (gd->coarseActive && gd->combination == PC_GDSW_MULTIPLICATIVE) {
-    PetscCall(MatMultTranspose(pc->pmat, y, gd->tmp1));
-    PetscCall(VecAYPX(gd->tmp1, -1.0, x));
-    PetscCall(ApplyCoarseTranspose(pc, gd->tmp1, y));
-  } else if (gd->coarseActive) PetscCall(ApplyCoarseTranspose(pc, x, y));
-  PetscCall(PetscLogEventEnd(GDSW_Apply, pc, x, y, 0));
+  PetscCall(Apply(pc, x, y, PETSC_TRUE));
   PetscFunctionReturn(0);
 }
 
