@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* A scene's blocks: the ones it names (-blocks, or -physics as a shorthand), wired to each
    other (the fluid moves with the geometry; the coupling ties structure, fluid and geometry),
    on one DM: every block's fields, then every block's conditions (they build the section's

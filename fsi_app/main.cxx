@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 static const char help[] = "fsi_app: monolithic fluid-structure interaction on PETSc. A scene is a list of blocks:\n"
                            "the structure (linear elastic, Neo-Hooke and arterial walls; statics and dynamics), the\n"
                            "fluid (Navier-Stokes, P2-P1, ALE on a moving mesh), the geometry (harmonic mesh motion)\n"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 #include "scene.h"
 #include "discretization/fields.h"
 #include "solver/block.h"

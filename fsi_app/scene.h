@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* A scene: every application option, read once, checked, with its default (-help lists them). */
 #pragma once
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-2-Clause
 """The fluid block's linear solver as the mesh is refined twice and the step varies: the seed's
 inflow pulse in the rigid tube #1 (fluid alone, backward Euler, 4 steps; tube1_L0-L2, make-meshes
 makes L2), FGMRES with the fieldsplit Schur/selfp + BoomerAMG preconditioner of

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-2-Clause
 """The coupled tube #1 (linear wall, scenes/fsi_tube1_linear.opts), 2 MPI ranks.
   solvers: FaCSI (scenes/fsi_facsi.opts) against MUMPS on the whole Jacobian
            (scenes/fsi_mumps.opts) and the multiplicative fieldsplit with MUMPS on the

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-2-Clause
 """Iteration counts of -pc_type gdsw against PETSc's own GDSW (PCMG with the adaptive GDSW
 coarse space) and one-level PCASM, on the same matrices: PETSc's ksp/tutorials/ex71 3D
 elasticity, one subdomain per MPI rank (p^3 ranks, oversubscribed: counts only, no timings),

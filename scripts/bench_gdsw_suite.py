@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-2-Clause
 """Issue 3's benchmark suite: -pc_type gdsw side by side with every PETSc alternative on the
 same matrices, 2 MPI ranks, CG to rtol 1e-8 (MUMPS: one direct solve).
   P1 Q1 elasticity on the unit cube (pc_gdsw/examples/elasticity.cxx), homogeneous

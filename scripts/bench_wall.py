@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-2-Clause
 """The seed's Table 2 in kind, for the wall alone (structure-only proxy of the FSI scene): tube #1
 wall, clamped rings, the seed's inflow pressure 0.133 kPa inside for t <= 3 ms; for each material
 and time step: Newton steps per time step, Krylov iterations per Newton step, and the time per

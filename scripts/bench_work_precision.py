@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-2-Clause
 """Error against run time, one line per preconditioner (points: mesh levels), 2 MPI ranks. Time
 is the solve loop's wall clock from the run report (assembly + set-up + iterations), error the
 relative L2 norm of the displacement or velocity against the exact solution.

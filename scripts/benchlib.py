@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-2-Clause
 """Shared by the bench_* scripts: run one command, and write its results as CSV plus the exact
 commands that produced them."""
 import csv

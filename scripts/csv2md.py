@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-2-Clause
 """Print a results CSV as a markdown table (for the README), optionally only some columns.
 Usage: scripts/csv2md.py bench/results/NAME.csv [column ...]"""
 import csv

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-2-Clause
 """Render a coupled fsi_app XDMF series (fluid and wall parts) at one time, like Fig. 5 of
 Heinlein, Klawonn, Rheinbach (2016): the tube cut along its axis, warped by the displacement
 times a factor, the fluid coloured by pressure and the wall grey; prints what ParaView read so a test can check it.

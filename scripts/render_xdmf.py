@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-2-Clause
 """Open an fsi_app XDMF series in ParaView and render its last frame, warped by the
 displacement, to a PNG; prints what ParaView read (frames, points, cells, the displacement
 range) so a test can check it.   pvbatch scripts/render_xdmf.py <file.xdmf> <out.png> [warp]"""

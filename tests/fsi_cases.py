@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-2-Clause
 """ctest cases for fsi_app: each runs programs and asserts numbers or messages from their output."""
 import cmath
 import json

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 static const char help[] = "Exercises PCGDSW's API on a nonsymmetric problem: upwind convection-diffusion\n"
                            "-Laplace(u) + beta (1, 1/2) . grad(u) = 1 on the unit square, zero on its boundary, n x n interior nodes.\n"
                            "  -case transpose  <P^T x, y> = <x, P y> for random x, y; GMRES with KSPSolve and KSPSolveTranspose\n"

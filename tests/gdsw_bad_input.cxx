@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 static const char help[] = "Feeds PCGDSW one kind of bad input (-case <name>) so that tests can check its error message.\n"
                            "Cases: nonsquare, unassembled, coordinates, nullspace_length, singular, zero_row_2d, floating, partial_node, uncovered, empty_subdomain.\n";
 

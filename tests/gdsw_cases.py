@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-2-Clause
 """ctest cases for pc_gdsw: each runs programs and asserts numbers or messages from their output."""
 import json
 import os

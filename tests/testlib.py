@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-2-Clause
 """Shared helpers of the ctest case files: run a program under mpiexec, assert bounds."""
 import os
 import subprocess

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 #include "block.h"
 #include "discretization/ale_map.h"
 #include "discretization/fields.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The coupling block: the Lagrange multiplier lambda (P2, 3 components, on the interface
    nodes) and the coupling rows of the monolithic system (eq. 9 of Heinlein, Klawonn,
    Rheinbach 2016, the pressure-wave benchmark) for conforming meshes, where C1|G = I, C3|G = -I, C4|G = I are nodal selections:

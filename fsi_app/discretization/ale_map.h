@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The ALE map x = X + d(X) of a cell moved by a P2 displacement d (the fluid's mesh
    displacement d_f): at a point of the reference cell, the moved point, the volume ratio
    J = det F with F = dx/dX = I + grad_X d, and the basis gradients with respect to x,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 #include "cells.h"
 #include "mesh/mesh.h"
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The cells of one field on a region, prepared once: geometry, where each node's values sit in
    a local vector, and the global indices of the cell's dofs of this field for matrix assembly
    (negative where constrained: MatSetValues skips them). Every later loop is plain array

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 #include "conditions.h"
 #include "discretization/fields.h"
 #include "discretization/nodes.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Essential conditions, owned by the application: a list of (field, faces, components, value)
    that builds the local section's constraints (constrained dofs leave the global system) and
    that InsertEssentialValues() reads to write the values into local vectors. PETSc 3.18's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Fields on regions: one PetscFE per unknown, living on the cells of a named physical group
    (or on the whole mesh), so a scene allocates only the unknowns of the blocks it names. */
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Where the Lagrange nodes of a P1/P2 field are (vertices and edge midpoints), and the
    rigid-body modes at them. Point evaluation at the nodes is the P2 Lagrange dual basis, so
    nodal values are exact interpolation. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 #include "p2tet.h"
 #include <petscdt.h>
 

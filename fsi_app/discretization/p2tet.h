@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The P2 tetrahedron of the application's own element loops: barycentric basis (4 vertex and
    6 edge nodes), an exact quadrature, affine geometry, and where each node's dofs sit in a
    DMPlex cell closure. PETSc's PetscFE defines the dof layout (the PetscSection); the loops

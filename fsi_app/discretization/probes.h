@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Probes: a field's values over time at fixed reference points (the field's P1 or P2
    interpolant in the cell that holds the point): the pressure on the tube's axis, the wall's
    displacement at mid-length; and when a front first passes each of them (the wave speed of a

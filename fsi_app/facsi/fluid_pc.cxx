@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 #include "fluid_pc.h"
 #include <petsc/private/pcimpl.h>
 #include <petscdm.h>

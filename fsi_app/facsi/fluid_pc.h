@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* PCFACSIFLUID: the fluid step of FaCSI (Deparis, Forti, Grandperrin, Quarteroni 2016) — the
    preconditioner of the fluid split (u, p, lambda) inside a multiplicative PCFIELDSPLIT over
    structure -> geometry -> fluid, which is the block lower triangle P_DN of the coupled

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The fluid block: incompressible Navier-Stokes in ALE form, P2 velocity and P1 pressure
    (Taylor-Hood) on the fluid region, on the current configuration x = X + d_f(X) of a mesh
    moved by the P2 mesh displacement d_f (or on the fixed mesh):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 #include "block.h"
 #include "discretization/conditions.h"
 #include "verification/errors.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The fluid block: velocity u (P2) and pressure p (P1) on the fluid region, Navier-Stokes in
    ALE form on the mesh moved by the geometry block's d_f (or on the fixed mesh), its no-slip
    groups, inflow velocity or traction, and the exact data of the verification flows

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The geometry block: the fluid's mesh displacement d_f (P2) on the fluid region, the harmonic
    extension of the interface displacement (geometry/harmonic.h), d_f . n = 0 on the planar ends
    (-geometry_slip). On the interface, d_f is either prescribed (PrescribedMotion: the block

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The rows of the harmonic extension (the seed's eq. 5): -Lap d_f = 0 on the reference fluid
    region, component by component, P2 like the structure. The fluid's mesh moves with d_f
    (fluid/assembly.h). On the interface, d_f is given (prescribed motion) or its rows are the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The mesh motion ahead of each step: the harmonic extension of the step's new interface
    displacement, solved alone before the coupled Newton iteration starts (the geometry rows
    do not depend on the flow). Without it the first iterate would move only the boundary nodes,

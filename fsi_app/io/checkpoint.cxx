@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 #include "checkpoint.h"
 #include "files.h"
 #include "discretization/conditions.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Checkpoints: the state a run needs to continue exactly as if never stopped (step, time, the
    solution and the past states of the time scheme) and the options that define its problem,
    in PETSc binary, written to a temporary file and renamed, so a crash while writing leaves

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The files a run reads and writes, checked on rank 0 (where PETSc reads and writes them)
    before it uses them, so that a bad path or a damaged file is one sentence on every rank
    that names the option and the file, not a library's error halfway through the run. */

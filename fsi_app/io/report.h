@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* What a run did, for people and scripts: time per phase from PETSc's own log events, peak
    memory, and a JSON report (unknowns, Newton and Krylov iterations per step, results such as
    errors, phases, memory). */

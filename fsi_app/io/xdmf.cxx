@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 #include "xdmf.h"
 #include "discretization/conditions.h"
 #include "discretization/nodes.h"

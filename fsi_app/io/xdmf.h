@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Output for ParaView: a time series of fields on quadratic tetrahedra (Tetrahedron_10) in
    HDF5, described by an XDMF file that is rewritten after every frame, so it is valid whenever
    the run stops. A series has one part per region (the fluid, the wall), each a mesh with its

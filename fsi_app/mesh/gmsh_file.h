@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* A pass over a gmsh file before PETSc reads it. PETSc 3.18's reader trusts the file: an element
    that names a node or a block that names an entity the file does not define is a segfault
    there, or a mesh with other cells on another number of ranks; a NaN coordinate is read as

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Meshes: gmsh files read into one DMPlex whose labels are the file's physical groups, checked
    for the groups a scene needs, and distributed with a METIS partition of the cells. */
 #pragma once

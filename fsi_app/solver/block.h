@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* A block of the monolithic system (structure, fluid, geometry, coupling): it owns everything
    about itself — its fields, essential conditions, cells, rows of the residual and Jacobian,
    its split of the preconditioner, its output and its verification. A scene is a list of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 #include "splits.h"
 #include <petscdm.h>
 #include <petsc/private/snesimpl.h> /* KSPPreSolve_SNESEW: our pre-solve hook replaces SNES's */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* PCFIELDSPLIT by name. A scene of several blocks splits its system into the blocks' named
    splits (structure, geometry, fluid — the order of the block lower triangle: the geometry
    follows the structure, the fluid follows both), so options files address them by name,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 #include "subdomains.h"
 #include "discretization/nodes.h"
 #include <petscgdsw.h>

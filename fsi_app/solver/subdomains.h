@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The element-based decomposition that -pc_type gdsw gets from the application: METIS splits
    each rank's cells into subdomains; a subdomain's dofs are those in the closure of its cells. */
 #pragma once

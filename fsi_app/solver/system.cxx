@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 #include "system.h"
 #include "discretization/cells.h"
 #include "discretization/conditions.h"

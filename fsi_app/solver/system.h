@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The nonlinear system of a scene on one DM: the sum of the residuals and Jacobians of the
    blocks the scene names (structure, fluid, geometry, coupling), each adding its
    rows into the local vectors and the matrix. The essential values are inserted once, at the

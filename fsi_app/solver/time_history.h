@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Fully implicit differences on a uniform step dt: the k-th time derivative at t^(n+1) is
    dt^-k sum_j c_j x^(n+1-j), j = 0..depth, for backward Euler and BDF2 applied to the
    first-order system (x, v): the second derivative is the first one applied twice, so both

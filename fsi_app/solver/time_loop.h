@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The loop over time steps (dynamics) or load increments (statics), one nonlinear solve each.
    A step that fails (Newton diverged, an element inverted, the linear solver failed) is retried
    as two half steps, recursively up to a limit, with the time scheme's past states

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 #include "assembly.h"
 #include "discretization/ale_map.h"
 #include "verification/mms.h"

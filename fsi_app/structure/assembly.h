@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The structure block's residual and Jacobian, assembled cell by cell with the P2 element of
    discretization/p2tet.h: R(d) = int rho d_tt . v + int P(F) : grad v - int b . v
    + int_faces p n . v, with d_tt the fully implicit difference of solver/time_history.h and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The structure block: the wall's displacement d_s (P2) on its region, its material, loads and
    clamps, its rows R_s(d_s) (structure/assembly.h), GDSW's element subdomains and rigid-body
    modes, and its verification (Lame's cylinder, the manufactured solution). */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Forward-mode automatic differentiation with N directions, nestable (Dual<9, Dual<9>> gives
    second derivatives): stress and exact tangent of a hyperelastic law from its energy alone. */
 #pragma once

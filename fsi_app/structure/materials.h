@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Constitutive laws of the wall: the first Piola-Kirchhoff stress P(F) and its exact
    derivative A = dP/dF (A[((i*3 + j)*3 + k)*3 + l] = dP_ij/dF_kl), F = I + grad d. */
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 static const char help[] = "Reads a gmsh mesh as fsi_app does and prints, per physical group, its global number of\n"
                            "cells and faces, and of vertices and edges in their closure, after distribution.\n"
                            "  -mesh <file>          the .msh file\n"

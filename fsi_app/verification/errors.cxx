@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 #include "errors.h"
 #include "discretization/ale_map.h"
 #include "discretization/conditions.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Errors of a P1 or P2 field against an exact solution: L2 norm and H1 seminorm, with the
    norms of the exact solution for relative values, integrated by the element's own loops over
    the current configuration (the mesh moved by the P2 displacement `mesh`, if given). */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Exact solutions: a manufactured one (any material: its body force comes from the law's
    tangent) and Lame's thick-walled cylinder. */
 #pragma once

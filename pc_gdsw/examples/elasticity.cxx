@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 static const char help[] = "Q1 linear elasticity on the unit cube (or square: plane strain), clamped at x = 0, under gravity,\n"
                            "solved with any PETSc KSP/PC; with -pc_type gdsw it can hand the PC an element-based box\n"
                            "decomposition. Prints one summary line: iterations, coarse dimension, times.\n"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* petscgdsw.h: the two-level overlapping Schwarz preconditioner PCGDSW for PETSc.
    Use it from any PETSc program with -pc_type gdsw after either
      -dll_append <prefix>/lib/libpetscgdsw.so   (no code change), or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Coarse basis Phi = [Phi_I; Phi_Gamma] (seed eq. 2): Phi_Gamma restricts the null space to
    each interface component (GDSW) or spreads it from each coarse node with a partition of
    unity (RGDSW); Phi_I = -A_II^{-1} A_IGamma Phi_Gamma is its discrete harmonic extension,

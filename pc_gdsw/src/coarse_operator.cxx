@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* The coarse operator A_0 = Phi^T A Phi.
    When Phi was just extended with exact interior solves, (A Phi) vanishes on interior rows,
    so A_0 = sum_i Phi_Gamma_i^T (A_GammaI Phi_I + A^_GammaGamma Phi_Gamma)_i: a dense block per

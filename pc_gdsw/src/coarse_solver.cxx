@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Coarse solver: A_0 (coarse_operator.cxx) factored by the coarse KSP (default: MUMPS on all
    ranks of the PC, options prefix -pc_gdsw_coarse_). */
 #include "gdswimpl.h"

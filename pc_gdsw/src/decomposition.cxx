@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Decomposition: the nonoverlapping subdomains Omega~_i (which share their interface nodes,
    as the closures of element sets do) and the overlapping subdomains Omega_i^delta.
    Sources, in order of preference: the caller's element-based sets (PCGDSWSetSubdomains), a

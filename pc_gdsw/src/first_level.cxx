@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* First level: exact (or inexact, by options) solves on the overlapping subdomains
    Omega_i^delta, sum_i R_i^T A_i^{-1} R_i, or its restricted variant that prolongates each
    correction only on a nonoverlapping partition (each node goes to the subdomain of smallest

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Private data of PCGDSW. The setup is a pipeline of modules, each in its own file:
      decomposition.cxx  nonoverlapping subdomains Omega~_i and overlapping Omega_i^delta, their matrices
      interface.cxx      sharing sets, Dirichlet dofs, interface components, coarse numbering

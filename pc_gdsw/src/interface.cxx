@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-2-Clause
 /* Interface: which subdomains share each node (its sharing set), which dofs are Dirichlet
    dofs, the null-space data at each node, and the interface components: nodes with the same
    sharing set of two or more subdomains, split into connected pieces. Components are found by

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-2-Clause */
 /* An outside C program built against the installed library with pkg-config: links it, calls
    PCGDSWRegister() and solves the 2D 5-point Laplacian with -pc_type gdsw. */
 #include <petscgdsw.h>
