@@ -130,6 +130,18 @@ PetscErrorCode CouplingBlock::Residual(const PetscScalar *x, PetscScalar *f)
   PetscFunctionReturn(0);
 }
 
+void CouplingBlock::Couplings(Sparsity &s) const
+{
+  for (const Node &n : nodes)
+    for (int c = 0; c < 3; c++) {
+      const PetscInt l = n.global[LAMBDA][c], u = n.global[U][c], ds = n.global[DS][c], df = n.global[DF][c];
+      const PetscInt momentum[2] = {u, ds}, geometry[2] = {df, ds};
+      s.Couple(2, momentum, 1, &l); /* lambda in the fluid's and the wall's momentum rows */
+      s.Couple(1, &l, 2, momentum); /* u = d_t d_s on the interface */
+      s.Couple(1, &df, 2, geometry); /* d_f = d_s on the interface */
+    }
+}
+
 PetscErrorCode CouplingBlock::Jacobian(const PetscScalar *, Mat P)
 {
   const PetscScalar one = 1, minus = -1, rate = -history->first[0] / history->dt;

@@ -33,6 +33,7 @@ public:
 
   PetscErrorCode Residual(const PetscScalar *x, PetscScalar *f) override;
   PetscErrorCode Jacobian(const PetscScalar *x, Mat P) override;
+  void           Couplings(Sparsity &s) const override;
 
   /* lambda joins the fluid's split: the fluid block with its interface rows (FaCSI's fluid(u, p, lambda)) */
   const char           *SplitName() const override { return "fluid"; }

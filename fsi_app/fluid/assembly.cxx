@@ -153,33 +153,83 @@ PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
   PetscFunctionReturn(0);
 }
 
-/* The shape derivatives D_{d_f} R of cell k: the derivative of its volume and traction terms
-   (rows: 30 velocity, 4 pressure dofs) in its 30 mesh displacement dofs, by forward
-   differences of the element residual (the mesh velocity w moves with d_f by c_0 / dt). The
-   step is sqrt(machine epsilon) of the cell's size, where truncation and round-off are both
-   ~1e-8 relative: Newton stays quadratic down to the coupled tolerance, at half the cost of
-   central differences (31 cell residuals instead of 60). */
-static void ShapeDerivatives(const FluidForms &fb, PetscInt k, const CellState &s, const std::vector<std::pair<const TractionGroup *, const CellFace *>> &faces, PetscReal K[34 * 30])
+/* The shape derivatives of the traction terms of cell k's faces: rows its 30 velocity dofs,
+   columns its 30 mesh displacement dofs, added to S (34 x 30), by forward differences of the
+   face residual (the traction is data of the moved point and normal). The step is
+   sqrt(machine epsilon) of the cell's size, where truncation and round-off are both ~1e-8
+   relative: Newton stays quadratic down to the coupled tolerance. */
+static void FaceShapeDerivatives(const FluidForms &fb, PetscInt k, const PetscReal d[30], const std::vector<std::pair<const TractionGroup *, const CellFace *>> &faces, PetscReal S[34 * 30])
 {
-  const CellGeometry &g = fb.velocity.geom[k];
-  const PetscReal     h = PetscSqrtReal(PETSC_MACHINE_EPSILON) * PetscCbrtReal(g.detE), wRate = fb.history && !fb.history->past.empty() ? fb.history->first[0] / fb.history->dt : 0.0;
-  auto residual = [&](const CellState &t, PetscReal r[34]) {
-    for (int i = 0; i < 34; i++) r[i] = 0;
-    CellResidual(fb, k, t, r, r + 30);
-    for (const auto &tf : faces) FaceResidual(fb, *tf.first, *tf.second, t.d, r);
+  const PetscReal h = PetscSqrtReal(PETSC_MACHINE_EPSILON) * PetscCbrtReal(fb.velocity.geom[k].detE);
+  auto residual = [&](const PetscReal *de, PetscReal r[30]) {
+    for (int i = 0; i < 30; i++) r[i] = 0;
+    for (const auto &tf : faces) FaceResidual(fb, *tf.first, *tf.second, de, r);
   };
-  PetscReal r0[34];
-  residual(s, r0);
+  PetscReal r0[30];
+  residual(d, r0);
   for (int j = 0; j < 30; j++) {
-    PetscReal r[34];
-    CellState t = s;
-    t.d[j] += h, t.w[j] += wRate * h;
-    residual(t, r);
-    for (int i = 0; i < 34; i++) K[i * 30 + j] = (r[i] - r0[i]) / h;
+    PetscReal r[30], de[30];
+    for (int i = 0; i < 30; i++) de[i] = d[i];
+    de[j] += h;
+    residual(de, r);
+    for (int i = 0; i < 30; i++) S[i * 30 + j] += (r[i] - r0[i]) / h;
   }
 }
 
-/* Element matrix of the 30 velocity and 4 pressure dofs (rows and columns in that order). */
+/* The shape derivatives of the volume terms at one quadrature point (weight w, moved point m,
+   flow p), added to S (34 x 30). Moving node b in direction m changes dN_a by
+   -dN_a[m] dN_b, the weight by w dN_b[m], the gradient G_ij by -G_im dN_b[j], the mesh velocity
+   by wRate N_b e_m and the point by N_b e_m (the body force; db[i][m] = db_i/dx_m). */
+static void VolumeShapeDerivatives(const FluidForms &fb, const PetscReal N[10], const PetscReal l[4], const MovedPoint &m, const FlowPoint &p, const PetscReal cGradN[10], PetscReal w, PetscReal wRate, const PetscReal b[3], const PetscReal db[3][3], PetscReal S[34 * 30])
+{
+  const PetscReal div = p.G[0][0] + p.G[1][1] + p.G[2][2];
+  PetscReal       r[3], GtdN[10][3], GsdN[10][3];
+  for (int i = 0; i < 3; i++) r[i] = fb.rho * (p.dudt[i] + (p.u[0] - p.w[0]) * p.G[i][0] + (p.u[1] - p.w[1]) * p.G[i][1] + (p.u[2] - p.w[2]) * p.G[i][2]) - b[i];
+  for (int a = 0; a < 10; a++) {
+    const PetscReal *g = m.dN[a];
+    for (int i = 0; i < 3; i++) {
+      GtdN[a][i] = p.G[0][i] * g[0] + p.G[1][i] * g[1] + p.G[2][i] * g[2];                               /* (G^T dN_a)_i */
+      GsdN[a][i] = (p.G[i][0] + p.G[0][i]) * g[0] + (p.G[i][1] + p.G[1][i]) * g[1] + (p.G[i][2] + p.G[2][i]) * g[2]; /* ((G + G^T) dN_a)_i */
+    }
+  }
+  /* S_(ai)(bm) = w [dN_b[m] v_ai + N_a dr_i/dd_bm + p dN_a[m] dN_b[i]
+                      - mu (G_im dN_a.dN_b + dN_b[i] (G^T dN_a)_m + dN_a[m] ((G + G^T) dN_b)_i)]
+     with v_ai the residual's integrand and dr_i/dd_bm = -rho G_im (wRate N_b + (u - w).dN_b) - db_i/dx_m N_b */
+  PetscReal X[10][3]; /* p dN_b[i] - mu ((G + G^T) dN_b)_i */
+  for (int bb = 0; bb < 10; bb++)
+    for (int i = 0; i < 3; i++) X[bb][i] = p.p * m.dN[bb][i] - fb.mu * GsdN[bb][i];
+  for (int a = 0; a < 10; a++) {
+    const PetscReal *ga = m.dN[a];
+    PetscReal        wga[3], wGtdN[3];
+    for (int mm = 0; mm < 3; mm++) wga[mm] = w * ga[mm], wGtdN[mm] = w * fb.mu * GtdN[a][mm];
+    for (int i = 0; i < 3; i++) {
+      const PetscReal wv  = w * (r[i] * N[a] - p.p * ga[i] + fb.mu * GsdN[a][i]);
+      PetscReal      *row = &S[(3 * a + i) * 30];
+      for (int bb = 0; bb < 10; bb++) {
+        const PetscReal *gb = m.dN[bb];
+        const PetscReal  cG = -w * (fb.rho * N[a] * (wRate * N[bb] + cGradN[bb]) + fb.mu * (ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2])), cb = -w * N[a] * N[bb];
+        for (int mm = 0; mm < 3; mm++) row[3 * bb + mm] += wv * gb[mm] + wga[mm] * X[bb][i] - gb[i] * wGtdN[mm] + cG * p.G[i][mm] + cb * db[i][mm];
+      }
+    }
+  }
+  for (int c = 0; c < 4; c++)
+    for (int bb = 0; bb < 10; bb++)
+      for (int mm = 0; mm < 3; mm++) S[(30 + c) * 30 + 3 * bb + mm] -= w * l[c] * (m.dN[bb][mm] * div - GtdN[bb][mm]);
+}
+
+/* db_i/dx_j of the body force at x, by forward differences (manufactured data only) */
+static void ForceGradient(const FluidForms &fb, const PetscReal x[3], PetscReal h, const PetscReal b[3], PetscReal db[3][3])
+{
+  for (int j = 0; j < 3; j++) {
+    PetscReal y[3] = {x[0], x[1], x[2]}, bj[3] = {0, 0, 0};
+    y[j] += h;
+    fb.force(y, fb.time, bj);
+    for (int i = 0; i < 3; i++) db[i][j] = (bj[i] - b[i]) / h;
+  }
+}
+
+/* Element matrix of the 30 velocity and 4 pressure dofs (rows and columns in that order), and
+   with the shape derivatives their derivative in the cell's 30 mesh displacement dofs. */
 PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P)
 {
   const FluidForms                &fb = *(FluidForms *)ctx;
@@ -188,15 +238,17 @@ PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P)
 
   PetscFunctionBegin;
   PetscCall(TimeHistoryGetPast(fb.history, past));
-  const PetscReal mass = past.empty() ? 0.0 : fb.rho * fb.history->first[0] / fb.history->dt; /* d(rho d_t u)/du */
-  std::vector<std::vector<std::pair<const TractionGroup *, const CellFace *>>> cellFaces(fb.shapeDerivatives ? fb.velocity.Size() : 0);
+  const PetscReal mass  = past.empty() ? 0.0 : fb.rho * fb.history->first[0] / fb.history->dt; /* d(rho d_t u)/du */
+  const PetscReal wRate = past.empty() ? 0.0 : fb.history->first[0] / fb.history->dt;          /* d w / d d_f */
+  const PetscBool shape = (PetscBool)(fb.shapeDerivatives && fb.mesh);
+  std::vector<std::vector<std::pair<const TractionGroup *, const CellFace *>>> cellFaces(shape ? fb.velocity.Size() : 0);
   for (const TractionGroup &tg : fb.tractions) /* the traction faces of each cell: they move with its d_f */
     for (const CellFace &face : tg.faces)
-      if (fb.shapeDerivatives) cellFaces[face.k].push_back({&tg, &face});
+      if (shape) cellFaces[face.k].push_back({&tg, &face});
   for (PetscInt k = 0; k < fb.velocity.Size(); k++) {
     const CellGeometry &g = fb.velocity.geom[k];
     CellState           s;
-    PetscReal           K[34 * 34] = {0};
+    PetscReal           K[34 * 34] = {0}, S[34 * 30] = {0};
     PetscInt            idx[34];
     GatherState(fb, k, x, past, s);
     for (int i = 0; i < 30; i++) idx[i] = fb.velocity.global[30 * k + i];
@@ -227,16 +279,34 @@ PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P)
             K[(3 * a + i) * n + 30 + c] -= w * l[c] * m.dN[a][i]; /* - p div v */
             K[(30 + c) * n + 3 * a + i] -= w * l[c] * m.dN[a][i]; /* - q div u */
           }
+      if (shape) {
+        PetscReal b[3] = {0, 0, 0}, db[3][3] = {{0}};
+        if (fb.force) {
+          fb.force(m.x, fb.time, b);
+          ForceGradient(fb, m.x, PetscSqrtReal(PETSC_MACHINE_EPSILON) * PetscCbrtReal(g.detE), b, db);
+        }
+        VolumeShapeDerivatives(fb, N, l, m, p, cGradN, w, wRate, b, db, S);
+      }
     }
     PetscCall(MatSetValues(P, n, idx, n, idx, K, ADD_VALUES));
-    if (fb.shapeDerivatives && fb.mesh) {
-      PetscReal S[34 * 30];
-      ShapeDerivatives(fb, k, s, cellFaces[k], S);
+    if (shape) {
+      if (!cellFaces[k].empty()) FaceShapeDerivatives(fb, k, s.d, cellFaces[k], S);
       PetscCall(MatSetValues(P, n, idx, 30, &fb.mesh->global[30 * k], S, ADD_VALUES));
     }
   }
   PetscCall(TimeHistoryRestorePast(fb.history, past));
   PetscFunctionReturn(0);
+}
+
+void FluidCouplings(const FluidForms &fb, Sparsity &s)
+{
+  for (PetscInt k = 0; k < fb.velocity.Size(); k++) {
+    PetscInt idx[34];
+    for (int i = 0; i < 30; i++) idx[i] = fb.velocity.global[30 * k + i];
+    for (int c = 0; c < 4; c++) idx[30 + c] = fb.pressure.global[4 * k + c];
+    s.Couple(34, idx, 34, idx);
+    if (fb.shapeDerivatives && fb.mesh) s.Couple(34, idx, 30, &fb.mesh->global[30 * k]);
+  }
 }
 
 PetscErrorCode FluidFlux(DM dm, const FluidForms &fb, const std::vector<CellFace> &faces, Vec X, PetscReal *flux)

@@ -10,12 +10,14 @@
    velocity), t a prescribed traction on groups of faces (natural: stress-free) and f a body
    force (manufactured solutions). The Jacobian is exact in (u, p), convection included, and
    holds the shape derivatives (in d_f: the moved geometry, the mesh velocity, the moved
-   traction faces) if asked, by forward differences of the element residual; without them
+   traction faces) if asked: in closed form for the volume terms, by forward differences of
+   the face residual for the traction faces and of the body force in x; without them
    Newton is a quasi-Newton method on a moving mesh (-snes_mf_operator restores the exact
    derivative with this matrix as preconditioner). */
 #pragma once
 
 #include "discretization/cells.h"
+#include "solver/sparsity.h"
 #include "solver/time_history.h"
 #include <functional>
 #include <petscsnes.h>
@@ -49,6 +51,8 @@ struct FluidForms {
 /* BlockOps of solver/system.h (the context is the FluidForms). */
 PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f);
 PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P);
+/* the entries FluidJacobian inserts */
+void FluidCouplings(const FluidForms &fb, Sparsity &s);
 
 /* int u . n da over the faces (in the current configuration): the flux through an outlet. X is global. */
 PetscErrorCode FluidFlux(DM dm, const FluidForms &fb, const std::vector<CellFace> &faces, Vec X, PetscReal *flux);

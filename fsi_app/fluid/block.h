@@ -29,6 +29,7 @@ public:
 
   PetscErrorCode Residual(const PetscScalar *x, PetscScalar *f) override { return FluidResidual(&forms, x, f); }
   PetscErrorCode Jacobian(const PetscScalar *x, Mat P) override { return FluidJacobian(&forms, x, P); }
+  void           Couplings(Sparsity &s) const override { FluidCouplings(forms, s); }
   PetscErrorCode SetTime(PetscReal t) override { return forms.time = t, 0; }
   PetscErrorCode InitialState(DM dm, Vec x, PetscBool *set) override;
 

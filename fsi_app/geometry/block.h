@@ -30,6 +30,7 @@ public:
 
   PetscErrorCode Residual(const PetscScalar *x, PetscScalar *f) override { return GeometryResidual(&forms, x, f); }
   PetscErrorCode Jacobian(const PetscScalar *x, Mat P) override { return GeometryJacobian(&forms, x, P); }
+  void           Couplings(Sparsity &s) const override { GeometryCouplings(forms, s); }
   /* the harmonic extension's operator lives on the reference mesh: its split's PC is built once */
   SplitSetUp     SetUpPolicy() const override { return SETUP_ONCE; }
   PetscErrorCode Predict(PetscReal t, Vec x) override;

@@ -52,4 +52,9 @@ PetscErrorCode GeometryJacobian(void *ctx, const PetscScalar *, Mat P)
   PetscFunctionReturn(0);
 }
 
+void GeometryCouplings(const GeometryForms &gb, Sparsity &s)
+{
+  for (PetscInt k = 0; k < gb.cells.Size(); k++) s.Couple(30, &gb.cells.rows[30 * k], 30, &gb.cells.global[30 * k]);
+}
+
 } // namespace fsi

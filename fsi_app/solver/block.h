@@ -11,6 +11,7 @@
 #include "discretization/cells.h"
 #include "discretization/conditions.h"
 #include "io/report.h"
+#include "solver/sparsity.h"
 #include "solver/time_history.h"
 #include <petscsnes.h>
 #include <string>
@@ -48,6 +49,8 @@ public:
   /* Its rows: add to the local residual f and into the matrix P (local state x). */
   virtual PetscErrorCode Residual(const PetscScalar *x, PetscScalar *f) = 0;
   virtual PetscErrorCode Jacobian(const PetscScalar *x, Mat P) = 0;
+  /* The index blocks of its Jacobian's MatSetValues calls, without values: the matrix's layout. */
+  virtual void Couplings(Sparsity &s) const = 0;
   virtual PetscErrorCode SetTime(PetscReal t) { return 0; }
   /* The first iterate of the step to time t (global x holds the last state). */
   virtual PetscErrorCode Predict(PetscReal t, Vec x) { return 0; }

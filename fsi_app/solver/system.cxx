@@ -59,26 +59,18 @@ PetscErrorCode SystemCreateMatrix(DM dm, Mat *J)
   PetscFunctionReturn(0);
 }
 
-/* The entries the blocks insert at state x, as P's preallocation. (The preallocator has block
-   size 1 whatever P's: with 3, PETSc 3.18's fills some 3 x 3 blocks of zeros on one side of the
-   diagonal only, and the wall's matrix is no longer structurally symmetric.) */
-static PetscErrorCode Preallocate(const System &s, const PetscScalar *x, Mat P)
+/* P's storage: exactly the entries the blocks insert. */
+static PetscErrorCode LayOut(const System &s, Mat P)
 {
-  Mat      pre;
-  PetscInt m, n;
+  PetscLayout rows, cols;
 
   PetscFunctionBegin;
-  PetscCall(MatGetLocalSize(P, &m, &n));
-  PetscCall(MatCreate(PetscObjectComm((PetscObject)P), &pre));
-  PetscCall(MatSetSizes(pre, m, n, PETSC_DETERMINE, PETSC_DETERMINE));
-  PetscCall(MatSetType(pre, MATPREALLOCATOR));
-  PetscCall(MatSetUp(pre));
-  for (Block *b : s.blocks) PetscCall(b->Jacobian(x, pre));
-  PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, P));
-  PetscCall(MatDestroy(&pre));
-  PetscCall(MatSetOption(P, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  PetscCall(MatGetLayouts(P, &rows, &cols));
+  PetscCall(PetscLayoutSetUp(rows));
+  PetscCall(PetscLayoutSetUp(cols));
+  Sparsity sparsity(rows, cols);
+  for (const Block *b : s.blocks) b->Couplings(sparsity);
+  PetscCall(sparsity.LayOut(P));
   PetscFunctionReturn(0);
 }
 
@@ -92,7 +84,7 @@ static PetscErrorCode SystemJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
   PetscCall(VecGetArrayRead(Xl, &x));
   if (!s.laidOut) {
     PetscCall(PetscLogEventBegin(LayOutJacobian, P, 0, 0, 0));
-    PetscCall(Preallocate(s, x, P));
+    PetscCall(LayOut(s, P));
     PetscCall(PetscLogEventEnd(LayOutJacobian, P, 0, 0, 0));
   }
   s.laidOut = PETSC_TRUE;

@@ -19,7 +19,7 @@ struct System {
 };
 
 /* The Jacobian's matrix, without storage yet: the first Jacobian evaluation lays it out with
-   exactly the entries the blocks insert (DMCreateMatrix's pattern couples every field at a
+   exactly the entries the blocks insert (solver/sparsity.h; DMCreateMatrix's pattern couples every field at a
    point with every other: the geometry's rows with the velocity, the multiplier's with all the
    fluid's and the wall's: 65 % zeros on the coupled tube). Later insertions outside
    the pattern are errors. */

@@ -202,4 +202,10 @@ PetscErrorCode StructureJacobian(void *ctx, const PetscScalar *x, Mat P)
   PetscFunctionReturn(0);
 }
 
+/* (the follower load's faces add to their cell's entries) */
+void StructureCouplings(const StructureForms &sb, Sparsity &s)
+{
+  for (PetscInt k = 0; k < sb.cells.Size(); k++) s.Couple(30, &sb.cells.global[30 * k], 30, &sb.cells.global[30 * k]);
+}
+
 } // namespace fsi

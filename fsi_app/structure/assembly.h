@@ -6,6 +6,7 @@
 #pragma once
 
 #include "discretization/cells.h"
+#include "solver/sparsity.h"
 #include "solver/time_history.h"
 #include "structure/materials.h"
 #include <petscsnes.h>
@@ -38,5 +39,7 @@ struct StructureForms {
 /* BlockOps of solver/system.h (the context is the StructureForms). */
 PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f);
 PetscErrorCode StructureJacobian(void *ctx, const PetscScalar *x, Mat P);
+/* the entries StructureJacobian inserts */
+void StructureCouplings(const StructureForms &sb, Sparsity &s);
 
 } // namespace fsi

@@ -25,6 +25,7 @@ public:
 
   PetscErrorCode Residual(const PetscScalar *x, PetscScalar *f) override { return StructureResidual(&forms, x, f); }
   PetscErrorCode Jacobian(const PetscScalar *x, Mat P) override { return StructureJacobian(&forms, x, P); }
+  void           Couplings(Sparsity &s) const override { StructureCouplings(forms, s); }
   PetscErrorCode SetTime(PetscReal t) override;
 
   std::vector<PetscInt> SplitFields() const override { return {field}; }
