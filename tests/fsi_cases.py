@@ -430,7 +430,7 @@ def run_report():
     wall = report(os.path.join(tmp, "wall.json"))
     check_seconds(wall, "wall, gdsw", split=False)
     n = sum(wall["unknowns"].values())
-    nonzeros = int(re.findall(rf"rows={n}, cols={n}\s+total: nonzeros=(\d+)", out)[-1])
+    nonzeros = int(re.findall(rf"rows={n}, cols={n}(?:, bs=\d+)?\s+total: nonzeros=(\d+)", out)[-1])
     between(wall["peak_memory_mib"] * 2**20 / (12 * nonzeros), 1, 1e4, f"peak memory / AIJ storage of the operator ({nonzeros} nonzeros)")
     run([APP, "-options_file", os.path.join(MESHES, "..", "scenes", "fluid_tube1_pulse.opts"), "-mesh", os.path.join(MESHES, "tube1_L0.msh"),
          "-t_final", 1e-3, "-report", os.path.join(tmp, "fluid.json")])
