@@ -27,7 +27,7 @@ void Sparsity::Couple(PetscInt nr, const PetscInt rows[], PetscInt nc, const Pet
   for (PetscInt j = 0; j < nc; j++) stamps.push_back(Compact(cols[j]));
 }
 
-/* Calls f(rows, nr, cols, nc) for every stamp. */
+/* Calls f(s, rows, nr, cols, nc) for every stamp (s: its offset in stamps). */
 template <class F>
 static void ForEachStamp(const std::vector<PetscInt> &stamps, F f)
 {
@@ -43,8 +43,8 @@ PetscErrorCode Sparsity::LayOut(Mat P)
   PetscFunctionBegin;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   /* the stamps of each owned row (CSR), and of each row another rank owns */
-  std::vector<size_t>                                    rowStart(m + 1, 0), rowStamp;
-  std::unordered_map<PetscInt, std::vector<size_t>>      ghostRows;
+  std::vector<size_t>                               rowStart(m + 1, 0), rowStamp;
+  std::unordered_map<PetscInt, std::vector<size_t>> ghostRows;
   ForEachStamp(stamps, [&](size_t s, const PetscInt *rows, PetscInt nr, const PetscInt *, PetscInt) {
     for (PetscInt i = 0; i < nr; i++) {
       if (rows[i] < 0) continue;

@@ -27,7 +27,7 @@ private:
   PetscInt    Compact(PetscInt col);
   PetscLayout rmap;
   PetscInt    cStart, cEnd;
-  /* per block: nr, nc, the nr global rows, the nc columns in the compact numbering (owned
+  /* per stamp (one Couple call): nr, nc, the nr global rows, the nc columns in the compact numbering (owned
      columns first, then the others in order of appearance) */
   std::vector<PetscInt>                  stamps;
   std::vector<PetscInt>                  ghostCols; /* compact - (cEnd - cStart) -> global */
