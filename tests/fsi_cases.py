@@ -168,6 +168,24 @@ def structure_jacobian():
         assert len(ratios) >= 2 and max(ratios) < 1e-6, ratios
 
 
+@case
+def newton_step_length_stop():
+    """A Newton iteration that SNES ends on its step-length test (-snes_stol) far from its
+    residual tolerance is named as not converged: on the loaded Neo-Hooke cube -snes_stol 0.5
+    stops after 2 steps at |F| = 157 against the tolerance 4.15e-5 (1e-8 of |F_0| = 4150, which
+    the warning must quote to 3 digits); with the default stol Newton converges and no warning
+    is printed."""
+    base = [APP, "-mesh", os.path.join(MESHES, "cube_L0.msh"), "-material", "neohooke", "-structure_pressure", 2e4] + CUBE_LOAD
+    out = run(base + ["-snes_stol", 0.5], 1)
+    m = re.search(r"warning: at t = \S+ Newton stopped on the step length \(-snes_stol 0.5\) with \|F\| = (\S+), \S+ times its tolerance (\S+):", out)
+    assert m and "reason CONVERGED_SNORM_RELATIVE" in out, out[-2000:]
+    f0 = float(re.search(r"^\s*0 SNES Function norm (\S+)", run(base + ["-snes_stol", 0.5, "-snes_monitor"], 1), re.M).group(1))
+    between(float(m.group(2)) / (1e-8 * f0), 0.999, 1.001, "quoted tolerance / (snes_rtol |F_0|)")
+    between(float(m.group(1)) / float(m.group(2)), 10, float("inf"), "quoted |F| / tolerance")
+    out = run(base, 1)
+    assert "warning" not in out and "reason CONVERGED_FNORM" in out, out[-2000:]
+
+
 def small_strain_limit(law, shear, bulk, p):
     """A hyperelastic wall of tube #1 against the linear wall with its small-strain moduli (E and
     nu from the shear and bulk moduli), under the pressures p and p/2 (Newton to 1e-12, LU):

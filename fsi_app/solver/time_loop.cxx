@@ -16,6 +16,25 @@ static PetscErrorCode RebuildLaggedOperator(SNES snes)
   PetscFunctionReturn(0);
 }
 
+/* SNES's step-length test (-snes_stol) also ends a Newton iteration that stagnates far from
+   its residual tolerance (a preconditioner too weak for the tangent): say so, with the numbers,
+   rather than let CONVERGED_SNORM_RELATIVE pass for a converged state. */
+static PetscErrorCode WarnIfStagnated(SNES snes, PetscReal t)
+{
+  const PetscReal *norms;
+  PetscInt         n;
+  PetscReal        fnorm, atol, rtol, stol;
+
+  PetscFunctionBegin;
+  PetscCall(SNESGetFunctionNorm(snes, &fnorm));
+  PetscCall(SNESGetTolerances(snes, &atol, &rtol, &stol, nullptr, nullptr));
+  PetscCall(SNESGetConvergenceHistory(snes, (PetscReal **)&norms, nullptr, &n));
+  const PetscReal tol = PetscMax(atol, n > 0 ? rtol * norms[0] : 0.0);
+  if (fnorm > 10 * tol)
+    PetscCall(PetscPrintf(PetscObjectComm((PetscObject)snes), "warning: at t = %.4e Newton stopped on the step length (-snes_stol %g) with |F| = %.3e, %.3g times its tolerance %.3e: the state is not converged (a stronger preconditioner, or -snes_stol 0 to let Newton go on)\n", (double)t, (double)stol, (double)fnorm, (double)(fnorm / tol), (double)tol));
+  PetscFunctionReturn(0);
+}
+
 /* From t to t + h.dt; on failure, two halves on the past states refined to h.dt / 2, after
    which the past states of step h.dt are shifted by the result. */
 static PetscErrorCode Advance(const TimeLoop &loop, PetscReal t, PetscInt depth, Vec x, StepRecord &rec, PetscBool *ok)
@@ -35,6 +54,7 @@ static PetscErrorCode Advance(const TimeLoop &loop, PetscReal t, PetscInt depth,
   PetscCall(SNESGetLinearSolveIterations(loop.snes, &k));
   PetscCall(SNESGetConvergedReason(loop.snes, &rec.reason));
   rec.newton += n, rec.krylov += k;
+  if (rec.reason == SNES_CONVERGED_SNORM_RELATIVE) PetscCall(WarnIfStagnated(loop.snes, t + dt));
   *ok = (PetscBool)(rec.reason > 0);
   if (*ok) PetscCall(TimeHistoryPush(h, x, t + dt));
   else if (depth < loop.maxCuts) {
@@ -58,7 +78,11 @@ static PetscErrorCode Advance(const TimeLoop &loop, PetscReal t, PetscInt depth,
 
 PetscErrorCode RunTimeLoop(const TimeLoop &loop, PetscInt first, Vec x, std::vector<StepRecord> &records)
 {
+  PetscReal *norms;
+
   PetscFunctionBegin;
+  PetscCall(SNESGetConvergenceHistory(loop.snes, &norms, nullptr, nullptr));
+  if (!norms) PetscCall(SNESSetConvergenceHistory(loop.snes, nullptr, nullptr, PETSC_DECIDE, PETSC_TRUE)); /* |F_0| of each solve, PETSc's storage */
   for (PetscInt step = first + 1; step <= loop.steps; step++) {
     StepRecord rec;
     PetscBool  ok;
