@@ -19,10 +19,11 @@ struct System {
 };
 
 /* The Jacobian's matrix, without storage yet: the first Jacobian evaluation lays it out with
-   exactly the entries the blocks insert (solver/sparsity.h; DMCreateMatrix's pattern couples every field at a
-   point with every other: the geometry's rows with the velocity, the multiplier's with all the
-   fluid's and the wall's: 65 % zeros on the coupled tube). Later insertions outside
-   the pattern are errors. */
+   exactly the entries the blocks insert (solver/sparsity.h; DMCreateMatrix's pattern couples
+   every field at a point with every other: the geometry's rows with the velocity, the
+   multiplier's with all the fluid's and the wall's: 65 % zeros on the coupled tube). Later
+   insertions outside the pattern are errors. Block size 3 when every node carries one
+   3-component field (the wall alone: AMG aggregates nodes), else 1. */
 PetscErrorCode SystemCreateMatrix(DM dm, Mat *J);
 
 /* The system's residual and Jacobian become dm's DMSNES local callbacks; `s` must outlive dm.
