@@ -153,14 +153,27 @@ PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
   PetscFunctionReturn(0);
 }
 
+/* The forward-difference step in positions for cell g: sqrt(machine epsilon) of its size, where
+   truncation and round-off are both ~1e-8 relative (Newton stays quadratic down to the coupled
+   tolerance). */
+static PetscReal DifferenceStep(const CellGeometry &g)
+{
+  return PetscSqrtReal(PETSC_MACHINE_EPSILON) * PetscCbrtReal(g.detE);
+}
+
+/* The global indices of cell k's 30 velocity and 4 pressure dofs, in the element matrix's order. */
+static void CellIndices(const FluidForms &fb, PetscInt k, PetscInt idx[34])
+{
+  for (int i = 0; i < 30; i++) idx[i] = fb.velocity.global[30 * k + i];
+  for (int c = 0; c < 4; c++) idx[30 + c] = fb.pressure.global[4 * k + c];
+}
+
 /* The shape derivatives of the traction terms of cell k's faces: rows its 30 velocity dofs,
    columns its 30 mesh displacement dofs, added to S (34 x 30), by forward differences of the
-   face residual (the traction is data of the moved point and normal). The step is
-   sqrt(machine epsilon) of the cell's size, where truncation and round-off are both ~1e-8
-   relative: Newton stays quadratic down to the coupled tolerance. */
+   face residual (the traction is data of the moved point and normal). */
 static void FaceShapeDerivatives(const FluidForms &fb, PetscInt k, const PetscReal d[30], const std::vector<std::pair<const TractionGroup *, const CellFace *>> &faces, PetscReal S[34 * 30])
 {
-  const PetscReal h = PetscSqrtReal(PETSC_MACHINE_EPSILON) * PetscCbrtReal(fb.velocity.geom[k].detE);
+  const PetscReal h = DifferenceStep(fb.velocity.geom[k]);
   auto residual = [&](const PetscReal *de, PetscReal r[30]) {
     for (int i = 0; i < 30; i++) r[i] = 0;
     for (const auto &tf : faces) FaceResidual(fb, *tf.first, *tf.second, de, r);
@@ -251,8 +264,7 @@ PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P)
     PetscReal           K[34 * 34] = {0}, S[34 * 30] = {0};
     PetscInt            idx[34];
     GatherState(fb, k, x, past, s);
-    for (int i = 0; i < 30; i++) idx[i] = fb.velocity.global[30 * k + i];
-    for (int c = 0; c < 4; c++) idx[30 + c] = fb.pressure.global[4 * k + c];
+    CellIndices(fb, k, idx);
     for (PetscInt q = 0; q < fb.rule.nq; q++) {
       const PetscReal *l = &fb.rule.lambda[4 * q], *N = &fb.rule.N[10 * q];
       MovedPoint       m;
@@ -283,7 +295,7 @@ PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P)
         PetscReal b[3] = {0, 0, 0}, db[3][3] = {{0}};
         if (fb.force) {
           fb.force(m.x, fb.time, b);
-          ForceGradient(fb, m.x, PetscSqrtReal(PETSC_MACHINE_EPSILON) * PetscCbrtReal(g.detE), b, db);
+          ForceGradient(fb, m.x, DifferenceStep(g), b, db);
         }
         VolumeShapeDerivatives(fb, N, l, m, p, cGradN, w, wRate, b, db, S);
       }
@@ -302,8 +314,7 @@ void FluidCouplings(const FluidForms &fb, Sparsity &s)
 {
   for (PetscInt k = 0; k < fb.velocity.Size(); k++) {
     PetscInt idx[34];
-    for (int i = 0; i < 30; i++) idx[i] = fb.velocity.global[30 * k + i];
-    for (int c = 0; c < 4; c++) idx[30 + c] = fb.pressure.global[4 * k + c];
+    CellIndices(fb, k, idx);
     s.Couple(34, idx, 34, idx);
     if (fb.shapeDerivatives && fb.mesh) s.Couple(34, idx, 30, &fb.mesh->global[30 * k]);
   }

@@ -27,8 +27,8 @@ private:
   PetscInt    Compact(PetscInt col);
   PetscLayout rmap;
   PetscInt    cStart, cEnd;
-  /* per stamp (one Couple call): nr, nc, the nr global rows, the nc columns in the compact numbering (owned
-     columns first, then the others in order of appearance) */
+  /* per stamp (one Couple call): nr, nc, the nr global rows, the nc columns in the compact
+     numbering (owned columns first, then the others in order of appearance) */
   std::vector<PetscInt>                  stamps;
   std::vector<PetscInt>                  ghostCols; /* compact - (cEnd - cStart) -> global */
   std::unordered_map<PetscInt, PetscInt> ghostIndex;
