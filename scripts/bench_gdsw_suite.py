@@ -20,11 +20,9 @@ The build directory is $GDSW_BUILD (default <top>/build)."""
 import csv
 import math
 import os
-import re
 import sys
-import time
 
-from benchlib import run, write_results
+from benchlib import measure_solve as measure, write_results
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 build = os.environ.get("GDSW_BUILD", os.path.join(top, "build"))
@@ -89,37 +87,6 @@ def problems():
             f"-snes_type ksponly -structure_subdomains {default_subdomains(dofs / 2)}")
     cases += [("P4", f"{mesh} dt={dt}", f"{wall} -dt {dt} -t_final {dt}") for dt in ("1e-4", "5e-4")]
     return [c if len(c) == 4 else (*c, list(METHODS)) for c in cases]
-
-
-def measure(cmd, timeout):
-    """One run: its status, iterations, times and memory, parsed from its output."""
-    t0 = time.time()
-    out = run(cmd, timeout)
-    wall = time.time() - t0
-
-    def event(name):
-        m = re.search(rf"^{name}\s+\d+ \S+ (\S+)", out, re.M)
-        return float(m.group(1)) if m else float("nan")
-    reason = re.search(r"Linear solve (?:converged|did not converge) due to (\w+) iterations (\d+)", out)
-    dofs = re.search(r"^dofs (\d+)|unknowns: structure (\d+)", out, re.M)
-    mem = re.search(r"Maximum \(over computational time\) process memory:\s+total (\S+)", out)
-    if "benchlib: TIMEOUT" in out:
-        status = f"timeout ({timeout} s)"
-    elif re.search(r"out of memory|Out of memory|OOM|Killed", out):
-        status = "out of memory"
-    elif "PETSc ERROR" in out or "exited on signal" in out or not reason:
-        # PETSc's error class and message: the first two lines of its report that are not rules
-        said = [m for m in re.findall(r"PETSC ERROR: (.*\S)", out) if not m.startswith("---")][:2]
-        status = "error: " + (": ".join(said) if said else out.strip().splitlines()[-1] if out.strip() else "no output")[:120]
-    elif not reason.group(1).startswith("CONVERGED"):
-        status = "diverged " + reason.group(1)
-    else:
-        status = "ok"
-    setup, solve = event("PCSetUp"), event("KSPSolve")
-    return {"dofs": next(int(g) for g in dofs.groups() if g) if dofs else "",
-            "status": status, "iterations": int(reason.group(2)) if reason else "",
-            "setup_s": round(setup, 3), "solve_s": round(solve, 3), "total_s": round(setup + solve, 3),
-            "memory_MB": round(float(mem.group(1)) / 1e6) if mem else "", "wall_s": round(wall, 1)}
 
 
 def suite():

@@ -180,8 +180,8 @@ static PetscErrorCode Extend(PC pc, Subdomain &s, MatReuse reuse)
   PetscCall(ISGetLocalSize(s.isI, &nI));
   PetscCall(MatGetSize(s.PhiG, nullptr, &ncols));
   if (!nI || !ncols) PetscFunctionReturn(0);
-  PetscCall(MatCreateSubMatrix(s.Anon, s.isI, s.isI, reuse, &s.AII));
-  PetscCall(MatCreateSubMatrix(s.Anon, s.isI, s.isG, reuse, &s.AIG));
+  PetscCall(GDSWSubmatrix(s.Anon, s.isI, s.isI, 1, reuse, &s.AII));
+  PetscCall(GDSWSubmatrix(s.Anon, s.isI, s.isG, 1, reuse, &s.AIG));
   PetscCall(MatMatMult(s.AIG, s.PhiG, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &B));
   PetscCall(MatScale(B, -1.0));
   if (reuse == MAT_INITIAL_MATRIX) PetscCall(MatDuplicate(B, MAT_DO_NOT_COPY_VALUES, &s.PhiI));

@@ -54,27 +54,31 @@ static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, std:
   PetscCall(MatGetRowIJ(s.Anon, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
   PetscCall(MatSeqAIJGetArrayRead(s.Anon, &va));
   /* the couplings of each Gamma row that enter C, as (value, row of Phi_I or Phi_Gamma) */
-  std::vector<PetscInt>    ptr(nG + 1, 0), src;
+  std::vector<PetscInt>    ptr(nG + 1, 0), src; /* row of [Phi_I; Phi_Gamma] */
   std::vector<PetscScalar> val;
-  std::vector<char>        interior;
   for (PetscInt r = 0; r < nG; r++) {
     const PetscInt row = G[r];
     const auto    &Sr  = (*gd->sets)[s.setOf[row / bs]];
     for (PetscInt k = ia[row]; k < ia[row + 1]; k++) {
       const PetscInt w = where[ja[k]];
-      if (w >= 0) val.push_back(va[k]), src.push_back(w), interior.push_back(1);
-      else if (w <= -2 && FirstCommon(Sr, (*gd->sets)[s.setOf[ja[k] / bs]]) == s.gid) val.push_back(va[k]), src.push_back(-w - 2), interior.push_back(0);
+      if (w >= 0) val.push_back(va[k]), src.push_back(w);
+      else if (w <= -2 && FirstCommon(Sr, (*gd->sets)[s.setOf[ja[k] / bs]]) == s.gid) val.push_back(va[k]), src.push_back(nI - w - 2);
     }
     ptr[r + 1] = (PetscInt)val.size();
   }
-  std::vector<PetscScalar> C(nG * ncols, 0.0); /* column-major nG x ncols */
-  for (PetscInt j = 0; j < ncols; j++) {      /* a column at a time: Phi's columns are contiguous */
-    const PetscScalar *xI = phiI ? phiI + j * nI : nullptr, *xG = phiG + j * nG;
-    PetscScalar       *c  = &C[j * nG];
-    for (PetscInt r = 0; r < nG; r++) {
-      PetscScalar sum = 0;
-      for (PetscInt k = ptr[r]; k < ptr[r + 1]; k++) sum += val[k] * (interior[k] ? xI[src[k]] : xG[src[k]]);
-      c[r] = sum;
+  /* C = A_GammaI Phi_I + A^_GammaGamma Phi_Gamma, row-major nG x ncols: every coupling adds a
+     contiguous row of Phi (copied row-major once), so the inner loop runs over the columns */
+  std::vector<PetscScalar> X((nI + nG) * ncols), C(nG * ncols, 0.0);
+  for (PetscInt j = 0; j < ncols; j++) {
+    for (PetscInt r = 0; r < nI; r++) X[r * ncols + j] = phiI[j * nI + r];
+    for (PetscInt r = 0; r < nG; r++) X[(nI + r) * ncols + j] = phiG[j * nG + r];
+  }
+  for (PetscInt r = 0; r < nG; r++) {
+    PetscScalar *c = &C[r * ncols];
+    for (PetscInt k = ptr[r]; k < ptr[r + 1]; k++) {
+      const PetscScalar *x = &X[src[k] * ncols];
+      const PetscScalar  a = val[k];
+      for (PetscInt j = 0; j < ncols; j++) c[j] += a * x[j];
     }
   }
   PetscCall(PetscLogFlops(2.0 * ptr[nG] * ncols));
@@ -86,7 +90,8 @@ static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, std:
   PetscCall(PetscBLASIntCast(ncols, &n));
   PetscCall(PetscBLASIntCast(nG, &kk));
   const PetscScalar one = 1.0, zero = 0.0;
-  if (nG) PetscCallBLAS("BLASgemm", BLASgemm_("T", "N", &m, &n, &kk, &one, phiG, &kk, C.data(), &kk, &zero, block.data(), &m));
+  /* block = Phi_Gamma^T C; C row-major is C^T column-major (ncols x nG) */
+  if (nG) PetscCallBLAS("BLASgemm", BLASgemm_("T", "T", &m, &n, &kk, &one, phiG, &kk, C.data(), &n, &zero, block.data(), &m));
   PetscCall(PetscLogFlops(2.0 * nG * ncols * ncols));
   PetscCall(MatDenseRestoreArrayRead(s.PhiG, &phiG));
   if (nI) PetscCall(MatDenseRestoreArrayRead(s.PhiI, &phiI));

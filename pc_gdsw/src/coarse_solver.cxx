@@ -83,9 +83,11 @@ PetscErrorCode GDSWApplyCoarse(PC pc, Vec x, Vec y, PetscBool transpose)
   PC_GDSW *gd = (PC_GDSW *)pc->data;
 
   PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(GDSW_ApplyCoarse, pc, x, y, 0));
   PetscCall(MatMultTranspose(gd->Phi, x, gd->r0));
   if (transpose) PetscCall(KSPSolveTranspose(gd->coarseKsp, gd->r0, gd->x0));
   else PetscCall(KSPSolve(gd->coarseKsp, gd->r0, gd->x0));
   PetscCall(MatMultAdd(gd->Phi, gd->x0, y, y));
+  PetscCall(PetscLogEventEnd(GDSW_ApplyCoarse, pc, x, y, 0));
   PetscFunctionReturn(0);
 }

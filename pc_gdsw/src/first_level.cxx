@@ -301,6 +301,7 @@ PetscErrorCode GDSWApplyFirstLevel(PC pc, Vec x, Vec y, PetscBool transpose)
   PetscScalar    *w, *wo;
 
   PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(GDSW_ApplyLocal, pc, x, y, 0));
   if (transpose && restricted) {
     PetscCall(VecSet(gd->work, 0.0));
     PetscCall(VecScatterBegin(gd->prolongFrom, x, gd->work, INSERT_VALUES, SCATTER_REVERSE));
@@ -329,5 +330,6 @@ PetscErrorCode GDSWApplyFirstLevel(PC pc, Vec x, Vec y, PetscBool transpose)
     PetscCall(VecScatterBegin(gd->restrictTo, gd->workOut, y, ADD_VALUES, SCATTER_REVERSE));
     PetscCall(VecScatterEnd(gd->restrictTo, gd->workOut, y, ADD_VALUES, SCATTER_REVERSE));
   }
+  PetscCall(PetscLogEventEnd(GDSW_ApplyLocal, pc, x, y, 0));
   PetscFunctionReturn(0);
 }

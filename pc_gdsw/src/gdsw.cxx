@@ -12,7 +12,7 @@ const char *const PCGDSWCombinationTypes[] = {"additive", "multiplicative", "PCG
 const char *const PCGDSWFirstLevelTypes[]  = {"additive", "restricted", "PCGDSWFirstLevelType", "PC_GDSW_FIRST_LEVEL_", nullptr};
 const char *const PCGDSWRGDSWWeightTypes[] = {"equal", "distance", "PCGDSWRGDSWWeightType", "PC_GDSW_RGDSW_WEIGHTS_", nullptr};
 
-PetscLogEvent GDSW_Decomposition, GDSW_Interface, GDSW_Basis, GDSW_Extension, GDSW_CoarseSetUp, GDSW_LocalFactor, GDSW_Apply;
+PetscLogEvent GDSW_Decomposition, GDSW_Interface, GDSW_Basis, GDSW_Extension, GDSW_CoarseSetUp, GDSW_LocalFactor, GDSW_Apply, GDSW_ApplyLocal, GDSW_ApplyCoarse;
 
 /* Direct solver defaults, measured on 3D elasticity (bench/results): CHOLMOD Cholesky for
    symmetric operators, else UMFPACK LU (the paper's local solver), when PETSc has SuiteSparse;
@@ -76,6 +76,7 @@ static PetscErrorCode PCReset_GDSW(PC pc)
     PetscCall(ISDestroy(&s.isI));
     PetscCall(ISDestroy(&s.isG));
     PetscCall(ISDestroy(&s.nonInOvl));
+    PetscCall(MatDestroy(&s.Aovl));
     PetscCall(MatDestroy(&s.Anon));
     PetscCall(MatDestroy(&s.AII));
     PetscCall(MatDestroy(&s.AIG));
@@ -85,8 +86,6 @@ static PetscErrorCode PCReset_GDSW(PC pc)
     PetscCall(VecDestroy(&s.x));
     PetscCall(VecDestroy(&s.y));
   }
-  const PetscInt n = (PetscInt)gd->sub->size();
-  if (gd->AovlArr) PetscCall(MatDestroySubMatrices(n, &gd->AovlArr));
   gd->sub->clear();
   gd->sets->clear();
   PetscCall(PetscSFDestroy(&gd->nodeSF));
@@ -1445,6 +1444,8 @@ PetscErrorCode PCGDSWRegister(void)
   PetscCall(PetscLogEventRegister("GDSWCoarseSetUp", PC_CLASSID, &GDSW_CoarseSetUp));
   PetscCall(PetscLogEventRegister("GDSWLocalFactor", PC_CLASSID, &GDSW_LocalFactor));
   PetscCall(PetscLogEventRegister("GDSWApply", PC_CLASSID, &GDSW_Apply));
+  PetscCall(PetscLogEventRegister("GDSWApplyLocal", PC_CLASSID, &GDSW_ApplyLocal));
+  PetscCall(PetscLogEventRegister("GDSWApplyCoarse", PC_CLASSID, &GDSW_ApplyCoarse));
   PetscCall(PetscRegisterFinalize(PCGDSWFinalizePackage));
   PetscFunctionReturn(0);
 }

@@ -58,7 +58,7 @@ struct Subdomain {
   IS  isI = nullptr, isG = nullptr;     /* local dofs of Omega~_i: interior / interface */
   Mat PhiG = nullptr, PhiI = nullptr;   /* dense: interface values, harmonic extension */
   /* first level */
-  Mat Aovl = nullptr;                   /* A(Omega_i^delta, Omega_i^delta), owned by PC_GDSW::AovlArr */
+  Mat Aovl = nullptr;                   /* A(Omega_i^delta, Omega_i^delta) */
   KSP ksp = nullptr;
   Factorisation factorisation[2] = {UNFACTORED, UNFACTORED}; /* per LocalMatrix */
   Vec x = nullptr, y = nullptr;         /* views into the work vectors (arrays placed in apply) */
@@ -98,7 +98,6 @@ typedef struct {
   PetscSF   nodeSF;                       /* leaves: nodes of every local Omega~_i; roots: owned nodes */
   PetscInt  nDirichletRows;               /* global count */
   PetscInt  counts[3];                    /* faces, edges, vertices (global) */
-  Mat      *AovlArr;                     /* A(Omega_i^delta, Omega_i^delta), as MatCreateSubMatrices() made them */
   /* coarse level */
   Mat Phi, A0;
   PetscBool exactExtension;               /* every interior solve of the last extension was a direct factorisation */
@@ -118,6 +117,7 @@ typedef struct {
 /* module entry points */
 PETSC_INTERN PetscErrorCode GDSWBuildDecomposition(PC);
 PETSC_INTERN PetscErrorCode GDSWExtractSubdomainMatrices(PC, MatReuse);
+PETSC_INTERN PetscErrorCode GDSWSubmatrix(Mat, IS, IS, PetscInt, MatReuse, Mat *);
 PETSC_INTERN PetscErrorCode GDSWBuildInterface(PC);
 PETSC_INTERN PetscErrorCode GDSWBuildCoarseBasis(PC);
 PETSC_INTERN PetscErrorCode GDSWUpdateCoarseBasis(PC);
@@ -131,4 +131,4 @@ PETSC_INTERN PetscErrorCode GDSWSetUpLocalSolver(PC, KSP, gdsw::Subdomain &, gds
 PETSC_INTERN PetscErrorCode GDSWViewLocalSolvers(PC, PetscViewer);
 
 PETSC_INTERN PetscLogEvent GDSW_Decomposition, GDSW_Interface, GDSW_Basis, GDSW_Extension,
-  GDSW_CoarseSetUp, GDSW_LocalFactor, GDSW_Apply;
+  GDSW_CoarseSetUp, GDSW_LocalFactor, GDSW_Apply, GDSW_ApplyLocal, GDSW_ApplyCoarse;

@@ -1,0 +1,131 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""gdsw against what a PETSc user would otherwise type on ordinary elasticity: GAMG, ML,
+BoomerAMG and PETSc's own GDSW, with gdsw's defaults and each of its levers.
+  ex56   PETSc's ksp/tutorials/ex56 -ne 31 -use_mat_nearnullspace (98,304 dofs, a soft inclusion),
+         1 rank; and 2 ranks, where ex56 puts every row on rank 0
+  ex71   PETSc's ksp/tutorials/ex71 -pde_type Elasticity -dim 3 -cells 31,31,31 (MATIS), 2 ranks
+  cube   pc_gdsw/examples/elasticity.cxx -n 54 (Q1, 499,125 dofs), 2 ranks
+CG to rtol 1e-8 in the unpreconditioned norm, zero initial guess. Per run: iterations, set-up
+(PCSetUp) and solve (KSPSolve) time from -log_view (max over ranks), peak memory (sum over ranks);
+each command runs --repeat times (default 3) back to back and the row holds the median time.
+Writes bench/results/gdsw_vs_amg.{csv,cmd,png}.
+Usage: scripts/bench_gdsw_vs_amg.py [--quick] [--repeat N] [--only PROBLEM,...] [--plot]
+(--quick: small sizes, one run each, files in /tmp; --plot redraws the PNG from the CSV)
+The build directory is $GDSW_BUILD (default <top>/build)."""
+import csv
+import os
+import statistics
+import sys
+
+from benchlib import loadavg, measure_solve, write_results
+
+top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+build = os.environ.get("GDSW_BUILD", os.path.join(top, "build"))
+EX56 = os.path.join(build, "tests", "petsc_ksp_ksp_ex56")
+EX71 = os.path.join(build, "tests", "petsc_ksp_ksp_ex71")
+ELASTICITY = os.path.join(build, "pc_gdsw", "gdsw_elasticity")
+LIB = os.path.join(build, "pc_gdsw", "libpetscgdsw.so")
+quick = "--quick" in sys.argv
+results = "/tmp/gdsw_vs_amg_quick" if quick else os.path.join(top, "bench", "results")
+repeat = 1 if quick else int(sys.argv[sys.argv.index("--repeat") + 1]) if "--repeat" in sys.argv else 3
+
+KRYLOV = "-ksp_type cg -ksp_rtol 1e-8 -ksp_norm_type unpreconditioned -ksp_max_it 3000"
+MEASURE = "-ksp_converged_reason -log_view -memory_view"
+GDSW = f"-dll_append {LIB} -pc_type gdsw"
+PETSC_GDSW = ("-pc_type mg -pc_mg_levels 2 -pc_mg_galerkin -pc_mg_adapt_interp_coarse_space gdsw -pc_mg_type additive "
+              "-mg_levels_ksp_type richardson -mg_levels_ksp_max_it 1 -mg_levels_pc_type asm -mg_levels_pc_asm_overlap 1 "
+              "-mg_levels_pc_asm_type basic -mg_levels_sub_pc_type lu -mg_levels_sub_pc_factor_mat_solver_type mumps "
+              "-mg_coarse_pc_type redundant -mg_coarse_redundant_pc_type lu")
+# gdsw's defaults first, then one lever or a pair of them each
+METHODS = {
+    "gdsw (defaults)": GDSW,
+    "gdsw exact, RGDSW": f"{GDSW} -pc_gdsw_coarse_space rgdsw",
+    "gdsw exact, subdomains of 3000 dofs": f"{GDSW} -pc_gdsw_subdomain_size 3000",
+    "gdsw ICC(0)": f"{GDSW} -pc_gdsw_sub_pc_type icc",
+    "gdsw ICC(0), RGDSW": f"{GDSW} -pc_gdsw_sub_pc_type icc -pc_gdsw_coarse_space rgdsw",
+    "gdsw ICC(0), RGDSW, 12000 dofs": f"{GDSW} -pc_gdsw_sub_pc_type icc -pc_gdsw_coarse_space rgdsw -pc_gdsw_subdomain_size 12000",
+    "GAMG": "-pc_type gamg",
+    "ML": "-pc_type ml",
+    "BoomerAMG": "-pc_type hypre",
+    "BoomerAMG nodal": "-pc_type hypre -pc_hypre_boomeramg_nodal_coarsen 4 -pc_hypre_boomeramg_vec_interp_variant 2 "
+                       "-pc_hypre_boomeramg_strong_threshold 0.5 -pc_hypre_boomeramg_agg_nl 1",
+    "PETSc GDSW (PCMG)": PETSC_GDSW,
+}
+AMG = ["GAMG", "ML", "BoomerAMG", "BoomerAMG nodal"]
+# PETSc's GDSW converts an AIJ operator to MATIS with one subdomain per rank: 266 s on the cube
+NO_PETSC_GDSW = [m for m in METHODS if m != "PETSc GDSW (PCMG)"]
+
+
+def problems():
+    """(name, ranks, command before the solver options, methods)."""
+    ne, cells, n = (11, 11, 20) if quick else (31, 31, 54)
+    ex56 = f"{EX56} -ne {ne} -use_mat_nearnullspace"
+    return [("ex56", 1, f"mpiexec -n 1 {ex56}", list(METHODS)),
+            ("ex56 (2 ranks, all rows on rank 0)", 2, f"mpiexec -n 2 {ex56}", [m for m in METHODS if m.startswith("gdsw")] + ["ML"]),
+            ("ex71 MATIS", 2, f"mpiexec -n 2 {EX71} -pde_type Elasticity -dim 3 -cells {cells},{cells},{cells}", list(METHODS)),
+            ("cube", 2, f"mpiexec -n 2 {ELASTICITY} -n {n}", NO_PETSC_GDSW)]
+
+
+def main():
+    if "--plot" in sys.argv:
+        plot(list(csv.DictReader(open(os.path.join(results, "gdsw_vs_amg.csv")))))
+        return
+    os.makedirs(results, exist_ok=True)
+    only = sys.argv[sys.argv.index("--only") + 1].split(",") if "--only" in sys.argv else None
+    load, rows, cmds = loadavg(), [], []
+    for name, ranks, base, methods in problems():
+        if only and name.split()[0] not in only:
+            continue
+        for method in methods:
+            cmd = f"{base} {KRYLOV} {METHODS[method]} {MEASURE}"
+            runs = [measure_solve(cmd, 900) for _ in range(repeat)]
+            ok = [r for r in runs if r["status"] == "ok"]
+            row = dict(runs[0] if not ok else min(ok, key=lambda r: abs(r["total_s"] - statistics.median(x["total_s"] for x in ok))))
+            if ok:
+                row["total_s"] = round(statistics.median(r["total_s"] for r in ok), 3)
+                row["setup_s"] = round(statistics.median(r["setup_s"] for r in ok), 3)
+                row["solve_s"] = round(statistics.median(r["solve_s"] for r in ok), 3)
+            row = {"problem": name, "ranks": ranks, "method": method, **row, "runs": len(runs),
+                   "total_min_s": min((r["total_s"] for r in ok), default=""), "total_max_s": max((r["total_s"] for r in ok), default="")}
+            print(f"{name:34s} {method:34s} {row['status']:8.40s} its {row['iterations']!s:>5} setup {row['setup_s']:8.3f} "
+                  f"solve {row['solve_s']:8.3f} total {row['total_s']:8.3f} mem {row['memory_MB']!s:>6} MB", flush=True)
+            rows.append(row)
+            cmds.append(cmd)
+    for r in rows:
+        amg = [o["total_s"] for o in rows if o["problem"] == r["problem"] and o["method"] in AMG and o["status"] == "ok"]
+        r["ratio_to_best_amg"] = round(r["total_s"] / min(amg), 2) if amg and r["status"] == "ok" else ""
+    out = os.path.join(results, "gdsw_vs_amg")
+    write_results(out, rows, cmds, f"scripts/bench_gdsw_vs_amg.py (medians of {repeat} back-to-back runs, OMP_NUM_THREADS=1)", load)
+    plot(rows)
+
+
+def plot(rows):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    names = list(dict.fromkeys(r["problem"] for r in rows))
+    fig, axes = plt.subplots(1, len(names), figsize=(5.5 * len(names), 5), squeeze=False)
+    for ax, name in zip(axes[0], names):
+        group = [r for r in rows if r["problem"] == name and r["status"] == "ok"]
+        labels = [r["method"] for r in group]
+        setup = [float(r["setup_s"]) for r in group]
+        solve = [float(r["solve_s"]) for r in group]
+        y = range(len(group))
+        ax.barh(y, setup, color="tab:blue", label="set-up")
+        ax.barh(y, solve, left=setup, color="tab:orange", label="solve")
+        for k, r in enumerate(group):
+            ax.text(setup[k] + solve[k], k, f" {r['iterations']} its", va="center", fontsize=7)
+        ax.set_yticks(list(y))
+        ax.set_yticklabels(labels, fontsize=7)
+        ax.invert_yaxis()
+        ax.set_xlabel("seconds (median)")
+        ax.set_title(name, fontsize=9)
+    axes[0][0].legend(fontsize=7)
+    fig.suptitle("PCSetUp + KSPSolve, CG to 1e-8 (unpreconditioned norm)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(results, "gdsw_vs_amg.png"), dpi=110)
+
+
+if __name__ == "__main__":
+    main()
