@@ -37,14 +37,15 @@ PETSC_GDSW = ("-pc_type mg -pc_mg_levels 2 -pc_mg_galerkin -pc_mg_adapt_interp_c
               "-mg_levels_ksp_type richardson -mg_levels_ksp_max_it 1 -mg_levels_pc_type asm -mg_levels_pc_asm_overlap 1 "
               "-mg_levels_pc_asm_type basic -mg_levels_sub_pc_type lu -mg_levels_sub_pc_factor_mat_solver_type mumps "
               "-mg_coarse_pc_type redundant -mg_coarse_redundant_pc_type lu")
-# gdsw's defaults first, then one lever or a pair of them each
+# gdsw's defaults first, then its levers alone and together
 METHODS = {
     "gdsw (defaults)": GDSW,
-    "gdsw exact, RGDSW": f"{GDSW} -pc_gdsw_coarse_space rgdsw",
-    "gdsw exact, subdomains of 3000 dofs": f"{GDSW} -pc_gdsw_subdomain_size 3000",
-    "gdsw ICC(0)": f"{GDSW} -pc_gdsw_sub_pc_type icc",
-    "gdsw ICC(0), RGDSW": f"{GDSW} -pc_gdsw_sub_pc_type icc -pc_gdsw_coarse_space rgdsw",
-    "gdsw ICC(0), RGDSW, 12000 dofs": f"{GDSW} -pc_gdsw_sub_pc_type icc -pc_gdsw_coarse_space rgdsw -pc_gdsw_subdomain_size 12000",
+    "gdsw RGDSW": f"{GDSW} -pc_gdsw_coarse_space rgdsw",
+    "gdsw exact, 3000-dof subdomains": f"{GDSW} -pc_gdsw_subdomain_size 3000",
+    "gdsw incomplete": f"{GDSW} -pc_gdsw_local_solver incomplete",
+    "gdsw incomplete, RGDSW": f"{GDSW} -pc_gdsw_local_solver incomplete -pc_gdsw_coarse_space rgdsw",
+    "gdsw adaptive": f"{GDSW} -pc_gdsw_local_solver adaptive",
+    "gdsw adaptive, RGDSW": f"{GDSW} -pc_gdsw_local_solver adaptive -pc_gdsw_coarse_space rgdsw",
     "GAMG": "-pc_type gamg",
     "ML": "-pc_type ml",
     "BoomerAMG": "-pc_type hypre",

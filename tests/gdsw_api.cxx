@@ -42,6 +42,8 @@ static PetscErrorCode PrintSettings(PC pc)
   PCGDSWRGDSWWeightType weights;
   PCGDSWCombinationType combination;
   PCGDSWFirstLevelType  first;
+  PCGDSWLocalSolverType local;
+  PetscReal             conditionMax;
   PetscBool             rotations, reuse;
 
   PetscFunctionBegin;
@@ -54,8 +56,10 @@ static PetscErrorCode PrintSettings(PC pc)
   PetscCall(PCGDSWGetCombinationType(pc, &combination));
   PetscCall(PCGDSWGetFirstLevelType(pc, &first));
   PetscCall(PCGDSWGetReuseCoarseBasis(pc, &reuse));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "settings: subdomains %" PetscInt_FMT " subdomain_size %" PetscInt_FMT " overlap %" PetscInt_FMT " coarse_space %s rgdsw_weights %s rotations %d combination %s first_level_type %s reuse_coarse_basis %d\n",
-                        nsub, size, overlap, PCGDSWCoarseSpaceTypes[coarse], PCGDSWRGDSWWeightTypes[weights], (int)rotations, PCGDSWCombinationTypes[combination], PCGDSWFirstLevelTypes[first], (int)reuse));
+  PetscCall(PCGDSWGetLocalSolverType(pc, &local));
+  PetscCall(PCGDSWGetLocalConditionMax(pc, &conditionMax));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "settings: subdomains %" PetscInt_FMT " subdomain_size %" PetscInt_FMT " overlap %" PetscInt_FMT " coarse_space %s rgdsw_weights %s rotations %d combination %s first_level_type %s reuse_coarse_basis %d local_solver %s local_condition_max %g\n",
+                        nsub, size, overlap, PCGDSWCoarseSpaceTypes[coarse], PCGDSWRGDSWWeightTypes[weights], (int)rotations, PCGDSWCombinationTypes[combination], PCGDSWFirstLevelTypes[first], (int)reuse, PCGDSWLocalSolverTypes[local], (double)conditionMax));
   PetscFunctionReturn(0);
 }
 
@@ -159,6 +163,7 @@ static PetscErrorCode ChangeOne(PC pc)
   else if (what == "coarse_space") PetscCall(PCGDSWSetCoarseSpaceType(pc, PC_GDSW_COARSE_NONE));
   else if (what == "combination") PetscCall(PCGDSWSetCombinationType(pc, PC_GDSW_MULTIPLICATIVE));
   else if (what == "first_level_type") PetscCall(PCGDSWSetFirstLevelType(pc, PC_GDSW_FIRST_LEVEL_RESTRICTED));
+  else if (what == "local_solver") PetscCall(PCGDSWSetLocalSolverType(pc, PC_GDSW_LOCAL_INCOMPLETE));
   else SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-set %s is not one of the setters listed by -help", name);
   PetscFunctionReturn(0);
 }

@@ -258,6 +258,39 @@ def local_solvers():
     between(elasticity("-n", 8, "-boxes", 2, "-pc_gdsw_sub_pc_type", "ilu")["iterations"], ref + 1, 200, "iterations, ILU(0) local solves")
 
 
+@case
+def local_solver_types():
+    """-pc_gdsw_local_solver on Q1 elasticity with 17^3 nodes on 2 ranks (8 and 9 planes of 289
+    nodes: 6936 and 7803 rows): the size rule aims at 3000 dofs for incomplete and adaptive local
+    solvers, round(6936 / 3000) + round(7803 / 3000) = 2 + 3 subdomains (1 + 1 at the exact
+    solvers' 12000); incomplete: ICC(0) on all 5, with more iterations than exact factors of the
+    same 5 subdomains; adaptive with the bound 1 (an
+    incomplete factor's condition estimate exceeds 1) is the exact run and with the bound 1e12
+    the incomplete run, iteration for iteration; with the default bound 25 the homogeneous cube
+    keeps ICC(0) on every subdomain (estimates 4-14) and nu = 0.4999 factors every one exactly
+    (estimates above 70), each named under -info."""
+    base = [ELASTICITY, "-n", 16, "-ksp_view"]
+    exact = run(base + ["-pc_gdsw_subdomain_size", 3000], 2)
+    incomplete = run(base + ["-pc_gdsw_local_solver", "incomplete"], 2)
+    assert "about 3000 dofs each (-pc_gdsw_subdomain_size): 2 on rank 0" in incomplete
+    assert "5 subdomains (from the matrix graph)" in incomplete and "5 subdomains (from the matrix graph)" in exact
+    assert "local factorisations of the overlapping matrices: 5 incomplete (ICC/ILU)" in incomplete
+    assert "local factorisations of the overlapping matrices: 5 Cholesky" in exact
+    assert "type: icc" in incomplete
+    its = {k: int(re.search(r"^dofs .* iterations (\d+)", v, re.M).group(1)) for k, v in (("exact", exact), ("incomplete", incomplete))}
+    assert its["incomplete"] > its["exact"], its
+    for bound, ref in ((1, "exact"), (1e12, "incomplete")):
+        out = run(base + ["-pc_gdsw_local_solver", "adaptive", "-pc_gdsw_local_condition_max", bound], 2)
+        assert int(re.search(r"^dofs .* iterations (\d+)", out, re.M).group(1)) == its[ref], (bound, ref)
+        assert "local solvers adaptive: incomplete where its condition estimate is at most" in out
+    out = run(base + ["-pc_gdsw_local_solver", "adaptive", "-info", ":ksp"], 2)
+    assert "local factorisations of the overlapping matrices: 5 incomplete (ICC/ILU)" in out
+    assert "exact factorisation" not in out
+    out = run(base + ["-nu", "0.4999", "-pc_gdsw_local_solver", "adaptive", "-info", ":ksp"], 2)
+    assert "local factorisations of the overlapping matrices: 5 Cholesky" in out
+    assert len(re.findall(r"the incomplete factor's condition estimate \S+ exceeds 25: exact factorisation", out)) == 5
+
+
 # ---- robustness: the hard cases of issue 3's problems 2-4, small (bounds: measured + ~20 %) ----
 def converges_within(opts, bound, what, np=2):
     """CG (rtol 1e-8, at most 2000 iterations) converges, with no more than `bound` iterations;
@@ -319,6 +352,7 @@ def view_and_log():
     out = run([ELASTICITY, "-n", 4, "-boxes", 2, "-help"])
     for s in ("-pc_gdsw_subdomains <now -1", "-pc_gdsw_subdomain_size <now", "-pc_gdsw_overlap <now 1", "-pc_gdsw_coarse_space <now gdsw", "-pc_gdsw_rgdsw_weights <now distance", "-pc_gdsw_rotations: <TRUE",
               "-pc_gdsw_combination <now additive", "-pc_gdsw_first_level_type <now additive", "-pc_gdsw_reuse_coarse_basis: <FALSE",
+              "-pc_gdsw_local_solver <now exact", "-pc_gdsw_local_condition_max <25.", "-pc_gdsw_subdomain_size <now 12000",
               "-pc_gdsw_sub_pc_type", "-pc_gdsw_extension_pc_type", "-pc_gdsw_coarse_pc_type"):
         assert s in out, f"missing in -help: {s!r}"
 
@@ -525,7 +559,7 @@ def api_setters_reset():
     (iterations, overlapping dofs, coarse dimension) and differs from the first solve (2 ranks,
     default size rule: one subdomain per rank)."""
     for name, value in (("subdomains", 4), ("subdomain_size", 200), ("overlap", 2), ("coarse_space", "none"),
-                        ("combination", "multiplicative"), ("first_level_type", "restricted")):
+                        ("combination", "multiplicative"), ("first_level_type", "restricted"), ("local_solver", "incomplete")):
         r = api_lines("-case", "setters", "-set", name, np=2)
         fresh = api_lines("-case", "transpose", f"-pc_gdsw_{name}", value, np=2)["forward"]
         keys = ("iterations", "overlap_dofs", "coarse")
@@ -538,7 +572,8 @@ def api_setters_reset():
 def api_getters():
     """Every -pc_gdsw_* option reaches its setter: the getters return what the options say."""
     opts = {"subdomains": 3, "subdomain_size": 500, "overlap": 2, "coarse_space": "rgdsw", "rgdsw_weights": "equal",
-            "rotations": 0, "combination": "multiplicative", "first_level_type": "restricted", "reuse_coarse_basis": 1}
+            "rotations": 0, "combination": "multiplicative", "first_level_type": "restricted", "reuse_coarse_basis": 1,
+            "local_solver": "adaptive", "local_condition_max": 40.5}
     args = []
     for k, v in opts.items():
         args += [f"-pc_gdsw_{k}", v]
@@ -703,7 +738,11 @@ def bad_option_values():
                             ("combination", "both", "is not one of: additive, multiplicative"),
                             ("first_level_type", "ras", "is not one of: additive, restricted"),
                             ("rotations", "maybe", "is not true or false"),
-                            ("reuse_coarse_basis", 2, "is not true or false")):
+                            ("reuse_coarse_basis", 2, "is not true or false"),
+                            ("local_solver", "fast", "is not one of: exact, incomplete, adaptive"),
+                            ("local_condition_max", "big", "is not a number: give the largest condition number estimate"),
+                            ("local_condition_max", "inf", "is not a number: give the largest condition number estimate"),
+                            ("local_condition_max", 0.5, "is out of range: give the largest condition number estimate")):
         out = run([ELASTICITY, "-n", 4, f"-pc_gdsw_{opt}", value], 2, fail=True)
         full = f"PCGDSW: -pc_gdsw_{opt} {value} {msg}"
         assert full in out, f"missing: {full!r}"

@@ -41,6 +41,15 @@ typedef enum {
 } PCGDSWRGDSWWeightType;
 PETSC_EXTERN const char *const PCGDSWRGDSWWeightTypes[];
 
+/* What solves the overlapping subdomain problems of the first level (unless -pc_gdsw_sub_pc_type
+   says otherwise). */
+typedef enum {
+  PC_GDSW_LOCAL_EXACT,      /* Cholesky (CHOLMOD) for symmetric operators, LU (UMFPACK) otherwise */
+  PC_GDSW_LOCAL_INCOMPLETE, /* ICC(0) for symmetric operators, ILU(0) otherwise */
+  PC_GDSW_LOCAL_ADAPTIVE    /* incomplete where its condition estimate is small enough, exact elsewhere */
+} PCGDSWLocalSolverType;
+PETSC_EXTERN const char *const PCGDSWLocalSolverTypes[];
+
 PETSC_EXTERN PetscErrorCode PCGDSWRegister(void);
 
 /* the decomposition */
@@ -52,6 +61,12 @@ PETSC_EXTERN PetscErrorCode PCGDSWSetSubdomainSize(PC, PetscInt);
 PETSC_EXTERN PetscErrorCode PCGDSWGetSubdomainSize(PC, PetscInt *);
 PETSC_EXTERN PetscErrorCode PCGDSWSetOverlap(PC, PetscInt);
 PETSC_EXTERN PetscErrorCode PCGDSWGetOverlap(PC, PetscInt *);
+
+/* the first level's local solvers */
+PETSC_EXTERN PetscErrorCode PCGDSWSetLocalSolverType(PC, PCGDSWLocalSolverType);
+PETSC_EXTERN PetscErrorCode PCGDSWGetLocalSolverType(PC, PCGDSWLocalSolverType *);
+PETSC_EXTERN PetscErrorCode PCGDSWSetLocalConditionMax(PC, PetscReal);
+PETSC_EXTERN PetscErrorCode PCGDSWGetLocalConditionMax(PC, PetscReal *);
 
 /* the coarse space and how the levels are combined */
 PETSC_EXTERN PetscErrorCode PCGDSWSetCoarseSpaceType(PC, PCGDSWCoarseSpaceType);

@@ -166,7 +166,7 @@ static PetscErrorCode PartitionNodes(const LocalGraph &g, PetscInt nparts, std::
 static PetscInt RequestedParts(const PC_GDSW *gd, PetscInt ndofs)
 {
   if (gd->nsubPerRank != PETSC_DECIDE) return gd->nsubPerRank;
-  return std::max<PetscInt>(1, (PetscInt)std::lround((double)ndofs / gd->subdomainSize));
+  return std::max<PetscInt>(1, (PetscInt)std::lround((double)ndofs / GDSWSubdomainSizeTarget(gd)));
 }
 
 /* Number the nonempty parts 0, 1, ... (METIS may leave parts empty). */

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-2-Clause
-/* First level: exact (or inexact, by options) solves on the overlapping subdomains
-   Omega_i^delta, sum_i R_i^T A_i^{-1} R_i, or its restricted variant that prolongates each
-   correction only on a nonoverlapping partition (each node goes to the subdomain of smallest
-   id that contains it in Omega~). Also the set-up of every local factorisation (these and the
-   interiors of the harmonic extension): Cholesky only where it can work, and a singular local
-   matrix stops the set-up with a sentence instead of a NaN in the first application. */
+/* First level: exact, incomplete or adaptive (incomplete where it is good enough) solves on the
+   overlapping subdomains Omega_i^delta, sum_i R_i^T A_i^{-1} R_i, or its restricted variant that
+   prolongates each correction only on a nonoverlapping partition (each node goes to the subdomain
+   of smallest id that contains it in Omega~). Also the set-up of every local factorisation (these
+   and the interiors of the harmonic extension): Cholesky only where it can work, and a singular
+   local matrix stops the set-up with a sentence instead of a NaN in the first application. */
 #include "gdswimpl.h"
 #include <algorithm>
 #include <string>
@@ -183,8 +183,10 @@ PetscErrorCode GDSWSetUpLocalSolver(PC pc, KSP ksp, Subdomain &s, LocalMatrix wh
     PetscCall(SwitchToLU(ksp));
   }
   if (!ok) PetscCall(KSPSetUp(ksp));
+  PetscBool incomplete;
   PetscCall(PetscObjectTypeCompare((PetscObject)lpc, PCLU, &lu));
-  kind = ok ? gdsw::CHOLESKY : (cholesky || failedBefore ? gdsw::LU_NOT_SPD : (lu ? gdsw::LU : gdsw::OTHER));
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)lpc, &incomplete, PCICC, PCILU, ""));
+  kind = ok ? gdsw::CHOLESKY : (cholesky || failedBefore ? gdsw::LU_NOT_SPD : (lu ? gdsw::LU : incomplete ? gdsw::INCOMPLETE : gdsw::OTHER));
   PetscCall(FactorFailure(ksp, &failure));
   if (!failure) PetscFunctionReturn(0);
   PetscCall(ZeroRow(pc, s, which, A, &dof));
@@ -201,13 +203,13 @@ PetscErrorCode GDSWSetUpLocalSolver(PC pc, KSP ksp, Subdomain &s, LocalMatrix wh
 PetscErrorCode GDSWViewLocalSolvers(PC pc, PetscViewer viewer)
 {
   PC_GDSW                 *gd = (PC_GDSW *)pc->data;
-  static const char *const names[] = {nullptr, "Cholesky", "LU", "LU instead of Cholesky (not symmetric positive definite)", "other solvers"};
-  PetscInt                 local[2][5] = {{0}}, count[2][5];
+  static const char *const names[] = {nullptr, "Cholesky", "LU", "LU instead of Cholesky (not symmetric positive definite)", "incomplete (ICC/ILU)", "other solvers"};
+  PetscInt                 local[2][6] = {{0}}, count[2][6];
 
   PetscFunctionBegin;
   for (const auto &s : *gd->sub)
     for (int m = 0; m < 2; m++) local[m][s.factorisation[m]]++;
-  PetscCallMPI(MPIU_Allreduce(local, count, 10, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)pc)));
+  PetscCallMPI(MPIU_Allreduce(local, count, 12, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)pc)));
   for (int m = 0; m < 2; m++) {
     std::string line;
     for (int k = gdsw::CHOLESKY; k <= gdsw::OTHER; k++)
@@ -264,6 +266,92 @@ static PetscErrorCode CreateScatters(PC pc)
   PetscFunctionReturn(0);
 }
 
+/* The local solver's defaults for -pc_gdsw_local_solver: the exact factorisation, or ICC(0) /
+   ILU(0) (PETSc's, natural ordering; ICC shifts its pivots to keep the factor positive). */
+static PetscErrorCode DefaultLocalSolver(PC pc, KSP ksp, bool incomplete)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+  PC       lpc;
+
+  PetscFunctionBegin;
+  if (!incomplete) {
+    PetscCall(GDSWDefaultFactorSolver(ksp, nullptr, gd->symmetric));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &lpc));
+  PetscCall(PCSetType(lpc, gd->symmetric ? PCICC : PCILU));
+  PetscFunctionReturn(0);
+}
+
+/* Condition estimate of M^{-1} A_i for the set-up incomplete factor M of A_i = A(Omega_i^delta):
+   the extreme singular values from the Lanczos (CG) or Arnoldi (GMRES) coefficients of a few
+   iterations on a fixed random right-hand side. Infinite when CG finds the preconditioner
+   indefinite. */
+static PetscErrorCode ConditionEstimate(PC pc, Subdomain &s, PetscReal *kappa)
+{
+  PC_GDSW           *gd = (PC_GDSW *)pc->data;
+  const PetscInt     its = 12;
+  KSP                est;
+  PC                 lpc;
+  Vec                b, x;
+  PetscRandom        rnd;
+  PetscReal          emax = 0, emin = 0;
+  KSPConvergedReason reason;
+
+  PetscFunctionBegin;
+  PetscCall(KSPGetPC(s.ksp, &lpc));
+  PetscCall(KSPCreate(PETSC_COMM_SELF, &est));
+  PetscCall(KSPSetOptionsPrefix(est, ((PetscObject)pc)->prefix)); /* its own prefix: the outer -ksp_* options are not its */
+  PetscCall(KSPAppendOptionsPrefix(est, "pc_gdsw_local_estimate_"));
+  PetscCall(KSPSetType(est, gd->symmetric ? KSPCG : KSPGMRES));
+  if (!gd->symmetric) PetscCall(KSPGMRESSetRestart(est, its));
+  PetscCall(KSPSetOperators(est, s.Aovl, s.Aovl));
+  PetscCall(KSPSetPC(est, lpc));
+  PetscCall(KSPSetComputeSingularValues(est, PETSC_TRUE));
+  PetscCall(KSPSetTolerances(est, 0.0, 0.0, PETSC_DEFAULT, its));
+  PetscCall(KSPSetConvergenceTest(est, KSPConvergedSkip, nullptr, nullptr));
+  PetscCall(KSPSetNormType(est, KSP_NORM_NONE));
+  PetscCall(MatCreateVecs(s.Aovl, &x, &b));
+  PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &rnd));
+  PetscCall(PetscRandomSetSeed(rnd, 271828 + (unsigned long)s.gid)); /* the same estimate in every run */
+  PetscCall(PetscRandomSeed(rnd));
+  PetscCall(VecSetRandom(b, rnd));
+  PetscCall(KSPSolve(est, b, x));
+  PetscCall(KSPGetConvergedReason(est, &reason));
+  if (reason != KSP_DIVERGED_INDEFINITE_PC && reason != KSP_DIVERGED_INDEFINITE_MAT) PetscCall(KSPComputeExtremeSingularValues(est, &emax, &emin));
+  *kappa = emin > 0 && !PetscIsInfOrNanReal(emax) ? emax / emin : PETSC_INFINITY;
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&b));
+  PetscCall(KSPDestroy(&est));
+  PetscFunctionReturn(0);
+}
+
+/* Adaptive local solvers: the incomplete factor of s stays if its condition estimate is at most
+   -pc_gdsw_local_condition_max; otherwise s is factored exactly. */
+static PetscErrorCode ChooseLocalSolver(PC pc, Subdomain &s)
+{
+  PC_GDSW  *gd = (PC_GDSW *)pc->data;
+  PetscReal kappa = PETSC_INFINITY;
+  PetscInt  n;
+
+  PetscFunctionBegin;
+  if (s.factorisation[gdsw::OVERLAPPING] != gdsw::INCOMPLETE) PetscFunctionReturn(0);
+  PetscCall(ConditionEstimate(pc, s, &kappa));
+  if (kappa <= gd->conditionMax) PetscFunctionReturn(0);
+  PetscCall(MatGetSize(s.Aovl, &n, nullptr));
+  char estimate[64]; /* C's %g: PETSc's printf marks whole numbers with a trailing point */
+  snprintf(estimate, sizeof(estimate), "%.4g exceeds %g", (double)kappa, (double)gd->conditionMax);
+  /* the subdomain's own solver reports, so that every rank prints its subdomains */
+  PetscCall(PetscInfo(s.ksp, "PCGDSW subdomain %" PetscInt_FMT " (%" PetscInt_FMT " dofs): the incomplete factor's condition estimate %s: exact factorisation\n", s.gid, n, estimate));
+  PetscCall(KSPReset(s.ksp));
+  PetscCall(KSPSetOperators(s.ksp, s.Aovl, s.Aovl));
+  PetscCall(DefaultLocalSolver(pc, s.ksp, false));
+  PetscCall(GDSWSetUpLocalSolver(pc, s.ksp, s, gdsw::OVERLAPPING));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode GDSWSetUpFirstLevel(PC pc, MatReuse reuse)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
@@ -281,11 +369,12 @@ PetscErrorCode GDSWSetUpFirstLevel(PC pc, MatReuse reuse)
       PetscCall(PetscObjectIncrementTabLevel((PetscObject)s.ksp, (PetscObject)pc, 1));
       PetscCall(KSPSetOptionsPrefix(s.ksp, ((PetscObject)pc)->prefix));
       PetscCall(KSPAppendOptionsPrefix(s.ksp, "pc_gdsw_sub_"));
-      PetscCall(GDSWDefaultFactorSolver(s.ksp, nullptr, gd->symmetric));
+      PetscCall(DefaultLocalSolver(pc, s.ksp, gd->localSolver != PC_GDSW_LOCAL_EXACT));
       PetscCall(KSPSetFromOptions(s.ksp));
     }
     PetscCall(KSPSetOperators(s.ksp, s.Aovl, s.Aovl));
     PetscCall(GDSWSetUpLocalSolver(pc, s.ksp, s, gdsw::OVERLAPPING));
+    if (reuse == MAT_INITIAL_MATRIX && gd->localSolver == PC_GDSW_LOCAL_ADAPTIVE) PetscCall(ChooseLocalSolver(pc, s));
   }
   PetscCall(PetscLogEventEnd(GDSW_LocalFactor, pc, 0, 0, 0));
   PetscFunctionReturn(0);

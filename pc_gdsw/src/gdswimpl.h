@@ -23,8 +23,9 @@ enum ComponentKind { FACE = 0, EDGE = 1, VERTEX = 2 };
 enum LocalMatrix { OVERLAPPING = 0, INTERIOR = 1 };
 
 /* How a local matrix was factored, for -pc_view: LU_NOT_SPD is LU where Cholesky was asked for
-   but the matrix is not symmetric positive definite; OTHER is any other solver the options chose. */
-enum Factorisation { UNFACTORED = 0, CHOLESKY, LU, LU_NOT_SPD, OTHER };
+   but the matrix is not symmetric positive definite; INCOMPLETE is ICC or ILU; OTHER is any other
+   solver the options chose. */
+enum Factorisation { UNFACTORED = 0, CHOLESKY, LU, LU_NOT_SPD, INCOMPLETE, OTHER };
 
 /* A group of coarse basis functions, seen from one subdomain. For GDSW it is one interface
    component; for RGDSW one coarse node whose support is every component it is an ancestor of. */
@@ -70,7 +71,9 @@ struct Subdomain {
 typedef struct {
   /* options */
   PetscInt              nsubPerRank;      /* -pc_gdsw_subdomains, or PETSC_DECIDE: the size rule */
-  PetscInt              subdomainSize;    /* -pc_gdsw_subdomain_size: target dofs per subdomain of the rule */
+  PetscInt              subdomainSize;    /* -pc_gdsw_subdomain_size: target dofs per subdomain of the rule, or PETSC_DECIDE: by the local solver */
+  PCGDSWLocalSolverType localSolver;      /* -pc_gdsw_local_solver */
+  PetscReal             conditionMax;     /* -pc_gdsw_local_condition_max: the adaptive first level's bound */
   PetscInt              overlap;          /* -pc_gdsw_overlap */
   PCGDSWCoarseSpaceType coarseType;
   PCGDSWCombinationType combination;
@@ -129,6 +132,7 @@ PETSC_INTERN PetscErrorCode GDSWApplyCoarse(PC, Vec, Vec, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWDefaultFactorSolver(KSP, MatSolverType, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWSetUpLocalSolver(PC, KSP, gdsw::Subdomain &, gdsw::LocalMatrix);
 PETSC_INTERN PetscErrorCode GDSWViewLocalSolvers(PC, PetscViewer);
+PETSC_INTERN PetscInt       GDSWSubdomainSizeTarget(const PC_GDSW *);
 
 PETSC_INTERN PetscLogEvent GDSW_Decomposition, GDSW_Interface, GDSW_Basis, GDSW_Extension,
   GDSW_CoarseSetUp, GDSW_LocalFactor, GDSW_Apply, GDSW_ApplyLocal, GDSW_ApplyCoarse;
