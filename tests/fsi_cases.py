@@ -797,6 +797,14 @@ def structure_indefinite_tangent():
     assert re.search(r"Cholesky failed on the interior matrix of subdomain \d+ \(\d+ dofs, not positive definite\): LU instead", out), out[-3000:]
     assert re.search(r"(the linear solver failed|Newton did not converge) in step 1 \(DIVERGED_\w+, also on the step halved 2 times\)", out), out[-3000:]
     assert "CHOLMOD detected" not in out and not re.search(r"\bnan\b", out, re.I)
+    # adaptive local solvers: the same run with ICC(0) first; the indefinite subdomains fail the
+    # condition estimate (CG breaks down or the estimate exceeds the bound) and go exact, then LU
+    out = run([APP, "-options_file", os.path.join(MESHES, "..", "scenes", "wall_tube1_pulse.opts"), "-mesh", os.path.join(MESHES, "tube1_L0.msh"),
+               "-structure_pressure", 3e5, "-t_final", 1e-3, "-snes_linesearch_type", "basic", "-max_step_cuts", 2,
+               "-pc_gdsw_local_solver", "adaptive", "-info", ":pc,ksp"], 2, fail=True)
+    assert re.search(r"PCGDSW subdomain \d+ \(\d+ dofs\): the incomplete factor's condition estimate \S+ exceeds 25: exact factorisation", out), out[-3000:]
+    assert re.search(r"(the linear solver failed|Newton did not converge) in step 1 \(DIVERGED_\w+, also on the step halved 2 times\)", out), out[-3000:]
+    assert "CHOLMOD detected" not in out and not re.search(r"\bnan\b", out, re.I)
 
 
 @case

@@ -92,6 +92,21 @@ def parity_petsc_gdsw_ex56():
 
 
 @case
+def unbalanced_rows():
+    """ksp ex56 on 2 ranks puts every row on rank 0: its 6 METIS subdomains (-pc_gdsw_subdomains
+    6 on rank 0, none on the rank without rows) are redistributed 3 + 3, and the solve is the
+    1-rank solve with the same 6 subdomains, iteration for iteration; with the rows balanced
+    (gdsw_elasticity) nothing moves."""
+    ex56 = [EX56, "-ne", 15, "-use_mat_nearnullspace", "-ksp_type", "cg", "-ksp_rtol", "1e-8", "-ksp_converged_reason", "-ksp_view",
+            "-dll_append", LIB, "-pc_type", "gdsw", "-pc_gdsw_subdomains", 6]
+    two, one = run(ex56, 2), run(ex56, 1)
+    assert "the ranks' rows are unbalanced: the subdomains were redistributed, 3 on rank 0" in two
+    assert "6 subdomains (from the matrix graph)" in two and "6 subdomains (from the matrix graph)" in one
+    assert cg_iterations(two) == cg_iterations(one), (cg_iterations(two), cg_iterations(one))
+    assert "redistributed" not in run([ELASTICITY, "-n", 8, "-ksp_view"], 2)
+
+
+@case
 def matis_size_rule():
     """ex71 elasticity as MATIS on 2 ranks, 16^3 nodes: each rank's subdomain is split by the size
     rule like an AIJ operator's rows. The DMDA halves the nodes; one rank's elements reach one node

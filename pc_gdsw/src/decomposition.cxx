@@ -264,6 +264,77 @@ static PetscErrorCode AlgebraicSubdomains(PC pc, std::vector<std::vector<PetscIn
   PetscFunctionReturn(0);
 }
 
+/* Rows unbalanced over the ranks (ksp/tutorials/ex56 puts every row on rank 0) would leave the
+   other ranks idle. When the heaviest rank's subdomains hold more than 1.5 times the mean number
+   of nodes, the subdomains (ids consecutive, rank after rank) are cut into contiguous runs of
+   about equal nodes, one run per rank, and sent there with their node sets Omega~_i and P_i; the
+   rows stay where they are (the extraction and the scatters reach them). Returns whether it
+   moved any. */
+static PetscErrorCode BalanceSubdomains(PC pc, std::vector<std::vector<PetscInt>> &parts, PetscBool *moved)
+{
+  PC_GDSW    *gd  = (PC_GDSW *)pc->data;
+  auto       &sub = *gd->sub;
+  MPI_Comm    comm;
+  PetscMPIInt size, rank;
+
+  PetscFunctionBegin;
+  *moved = PETSC_FALSE;
+  PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (size == 1) PetscFunctionReturn(0);
+  PetscMPIInt nloc = (PetscMPIInt)sub.size();
+  std::vector<PetscMPIInt> count(size), displ(size + 1, 0);
+  PetscCallMPI(MPI_Allgather(&nloc, 1, MPI_INT, count.data(), 1, MPI_INT, comm));
+  for (PetscMPIInt r = 0; r < size; r++) displ[r + 1] = displ[r] + count[r];
+  std::vector<PetscInt> mine(nloc), w(displ[size]);
+  for (PetscMPIInt i = 0; i < nloc; i++) mine[i] = (PetscInt)sub[i].nodes.size();
+  PetscCallMPI(MPI_Allgatherv(mine.data(), nloc, MPIU_INT, w.data(), count.data(), displ.data(), MPIU_INT, comm));
+  double total = 0, heaviest = 0;
+  for (PetscMPIInt r = 0; r < size; r++) {
+    double load = 0;
+    for (PetscMPIInt j = displ[r]; j < displ[r + 1]; j++) load += (double)w[j];
+    total += load, heaviest = std::max(heaviest, load);
+  }
+  if (heaviest <= 1.5 * total / size) PetscFunctionReturn(0);
+  /* destination of each subdomain: the rank whose share of the nodes contains its middle */
+  std::vector<std::vector<PetscInt>> out(size);
+  double before = 0;
+  for (PetscMPIInt j = 0; j < displ[size]; j++) {
+    const PetscMPIInt dest = std::min<PetscMPIInt>(size - 1, (PetscMPIInt)(size * (before + 0.5 * (double)w[j]) / total));
+    before += (double)w[j];
+    if (j < displ[rank] || j >= displ[rank + 1]) continue;
+    const PetscInt i = j - displ[rank];
+    auto          &o = out[dest];
+    o.push_back(sub[i].gid);
+    o.push_back((PetscInt)sub[i].nodes.size());
+    o.insert(o.end(), sub[i].nodes.begin(), sub[i].nodes.end());
+    o.push_back((PetscInt)parts[i].size());
+    o.insert(o.end(), parts[i].begin(), parts[i].end());
+  }
+  std::vector<PetscMPIInt> scount(size), rcount(size), sdispl(size + 1, 0), rdispl(size + 1, 0);
+  for (PetscMPIInt r = 0; r < size; r++) scount[r] = (PetscMPIInt)out[r].size();
+  PetscCallMPI(MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, comm));
+  std::vector<PetscInt> sbuf;
+  for (PetscMPIInt r = 0; r < size; r++) sdispl[r + 1] = sdispl[r] + scount[r], rdispl[r + 1] = rdispl[r] + rcount[r], sbuf.insert(sbuf.end(), out[r].begin(), out[r].end());
+  std::vector<PetscInt> rbuf(rdispl[size]);
+  PetscCallMPI(MPI_Alltoallv(sbuf.data(), scount.data(), sdispl.data(), MPIU_INT, rbuf.data(), rcount.data(), rdispl.data(), MPIU_INT, comm));
+  /* sources in rank order and each in its order: the ids stay ascending */
+  sub.clear(), parts.clear();
+  for (size_t k = 0; k < rbuf.size();) {
+    Subdomain s;
+    s.gid = rbuf[k++];
+    s.nodes.assign(rbuf.begin() + k + 1, rbuf.begin() + k + 1 + rbuf[k]);
+    k += 1 + rbuf[k];
+    parts.emplace_back(rbuf.begin() + k + 1, rbuf.begin() + k + 1 + rbuf[k]);
+    k += 1 + rbuf[k];
+    sub.push_back(std::move(s));
+  }
+  PetscCall(PetscInfo(pc, "the ranks' rows are unbalanced (the heaviest holds %.2f times the mean of the subdomains' nodes): the subdomains are redistributed, %zu on this rank\n", heaviest * size / total, sub.size()));
+  *moved = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
 /* A MATIS operator: each rank's subdomain (the rows of its local matrix) split like a rank's
    rows of an AIJ operator (the size rule or -pc_gdsw_subdomains, METIS on the local matrix's node
    graph, each part closed by its neighbours in parts of larger number), as global dof sets. The
@@ -366,6 +437,7 @@ PetscErrorCode GDSWBuildDecomposition(PC pc)
   PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
   PetscCall(PetscObjectTypeCompare((PetscObject)pc->pmat, MATIS, &isIS));
   const PetscBool haveUser = (PetscBool)(gd->nUser >= 0);
+  gd->balanced             = PETSC_FALSE;
   if (haveUser) {
     PetscCall(GivenSubdomains(pc, gd->nUser, gd->userNon, origin));
   } else if (isIS) {
@@ -374,7 +446,10 @@ PetscErrorCode GDSWBuildDecomposition(PC pc)
     PetscCall(GivenSubdomains(pc, (PetscInt)non.size(), non.data(), origin));
     for (IS &is : non) PetscCall(ISDestroy(&is));
   } else {
+    PetscBool moved;
     PetscCall(AlgebraicSubdomains(pc, parts));
+    PetscCall(BalanceSubdomains(pc, parts, &moved));
+    PetscCallMPI(MPIU_Allreduce(&moved, &gd->balanced, 1, MPIU_BOOL, MPI_LOR, comm));
   }
   PetscInt nloc = (PetscInt)gd->sub->size();
   PetscCallMPI(MPIU_Allreduce(&nloc, &gd->nGlobalSubdomains, 1, MPIU_INT, MPI_SUM, comm));

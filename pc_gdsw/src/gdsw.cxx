@@ -366,6 +366,7 @@ static PetscErrorCode PCView_GDSW(PC pc, PetscViewer viewer)
   if (gd->nUser < 0) {
     if (gd->nsubPerRank == PETSC_DECIDE) PetscCall(PetscViewerASCIIPrintf(viewer, "  subdomains per rank: chosen by the size rule, about %" PetscInt_FMT " dofs each (-pc_gdsw_subdomain_size): %" PetscInt_FMT " on rank 0\n", GDSWSubdomainSizeTarget(gd), gd->nsubRank0));
     else PetscCall(PetscViewerASCIIPrintf(viewer, "  subdomains per rank: %" PetscInt_FMT ", given (-pc_gdsw_subdomains)\n", gd->nsubPerRank));
+    if (gd->balanced) PetscCall(PetscViewerASCIIPrintf(viewer, "  the ranks' rows are unbalanced: the subdomains were redistributed, %" PetscInt_FMT " on rank 0\n", gd->nsubRank0));
   }
   PetscCall(PetscViewerASCIIPrintf(viewer, "  %" PetscInt_FMT " subdomains (%s), overlap %s, %" PetscInt_FMT " dofs per node, %" PetscInt_FMT " null-space vectors%s\n", gd->nGlobalSubdomains, source,
                                    gd->nUser >= 0 && gd->userOvl ? "given by the application" : (std::to_string(gd->overlap) + " graph layers").c_str(), gd->bs, gd->nz, gd->haveCoords ? " (rigid modes from coordinates)" : ""));

@@ -98,6 +98,7 @@ typedef struct {
   PetscInt  nGlobalSubdomains;
   IS       *nonArr, *ovlArr;              /* the subdomains' index sets as arrays, for PCGDSWGetSubdomains() */
   PetscInt  nsubRank0;                    /* subdomains on rank 0, for the view */
+  PetscBool balanced;                     /* algebraic subdomains moved between ranks whose rows are unbalanced */
   PetscSF   nodeSF;                       /* leaves: nodes of every local Omega~_i; roots: owned nodes */
   PetscInt  nDirichletRows;               /* global count */
   PetscInt  counts[3];                    /* faces, edges, vertices (global) */
