@@ -49,8 +49,8 @@ struct LocalGraph {
 };
 
 /* Node adjacency of the rows of a sequential AIJ block M (one node per bs rows), in CSR: column c
-   belongs to column node colNode[c] (of ncolNodes), which is listed as id[colNode[c]]; self
-   loops (a column node equal to the row node) are dropped when own. A marker per column node
+   belongs to column node colNode[c], which is listed as id[colNode[c]]; self loops (a column
+   node equal to the row node) are dropped when own. A marker per column node
    keeps each list free of repeats; each list is sorted. */
 static PetscErrorCode NodeAdjacency(Mat M, PetscInt bs, const std::vector<PetscInt> &colNode, const std::vector<PetscInt> &id, bool own, std::vector<PetscInt> &xadj, std::vector<PetscInt> &adj)
 {
