@@ -228,6 +228,22 @@ def scalability_metis():
 
 
 @case
+def metis_connected():
+    """METIS's k-way parts can be disconnected (here: 73 parts of 30 dofs); each piece but the
+    largest joins a neighbouring part, so every nonoverlapping subdomain is connected in the
+    matrix graph (searched by the driver, independently of the PC), on 1 and 2 ranks."""
+    for np in (1, 2):
+        out = run([ELASTICITY, "-n", "8", "-pc_gdsw_subdomain_size", "30", "-report_subdomains", "-info"], np)
+        joined = [int(k) for k in re.findall(r"(\d+) disconnected pieces of METIS's parts joined", out)]
+        m = re.search(r"subdomains (\d+) nonoverlapping dofs \d+ overlapping dofs \d+ connected (\d+)", out)
+        its = int(re.search(r"iterations (\d+) reason CONVERGED", out).group(1))
+        print(np, "ranks: pieces joined", joined, "subdomains", m.group(1), "connected", m.group(2), "iterations", its)
+        assert sum(joined) > 0, "the decomposition has no disconnected part to join: the case tests nothing"
+        assert m.group(1) == m.group(2), out[-400:]
+        between(its, 20, 40, "GDSW with 30-dof subdomains")
+
+
+@case
 def matrix_types():
     """BAIJ and SBAIJ operators give the AIJ result (the driver's Dirichlet elimination needs
     MatZeroRowsColumns, which MPISBAIJ lacks: SBAIJ on one rank)."""

@@ -14,7 +14,7 @@ static const char help[] = "Q1 linear elasticity on the unit cube (or square: pl
                            "  -floating          no Dirichlet condition (the null space is attached to the operator)\n"
                            "  -check_phi         report how well the coarse basis reproduces the rigid-body modes\n"
                            "  -check_coarse      compare the coarse operator with Phi^T (A Phi) and report the coarse solver (AIJ only)\n"
-                           "  -report_subdomains report the dofs of all nonoverlapping and of all overlapping subdomains\n"
+                           "  -report_subdomains report the dofs of all nonoverlapping and of all overlapping subdomains, and how many of the former are connected\n"
                            "  -resolve_jump <0>  then reassemble with this -jump (same pattern) and solve again\n"
                            "  -mat_type <aij>    any assembled type (aij, baij, sbaij), or is (MATIS: each rank's element layers are its subdomain, for PCBDDC)\n";
 
@@ -246,10 +246,40 @@ static PetscErrorCode CheckCoarse(PC pc, Mat A)
   PetscFunctionReturn(0);
 }
 
-/* The dofs of all nonoverlapping and of all overlapping subdomains, as the PC uses them. */
-static PetscErrorCode ReportSubdomains(PC pc)
+/* Whether a set of dofs is connected in the graph of A (A(S, S) extracted, depth-first search).
+   Collective: every rank calls it, with an empty set if it has none. */
+static PetscErrorCode Connected(Mat A, IS S, PetscBool *connected)
 {
-  PetscInt n, local[3] = {0, 0, 0}, total[3];
+  Mat            *sub;
+  const PetscInt *ia, *ja;
+  PetscInt        n;
+  PetscBool       done;
+
+  PetscFunctionBegin;
+  PetscCall(MatCreateSubMatrices(A, 1, &S, &S, MAT_INITIAL_MATRIX, &sub));
+  PetscCall(MatGetRowIJ(sub[0], 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+  std::vector<char>     seen(n, 0);
+  std::vector<PetscInt> stack;
+  PetscInt              reached = 0;
+  if (n) seen[0] = 1, stack.push_back(0);
+  while (!stack.empty()) {
+    const PetscInt a = stack.back();
+    stack.pop_back();
+    reached++;
+    for (PetscInt k = ia[a]; k < ia[a + 1]; k++)
+      if (!seen[ja[k]]) seen[ja[k]] = 1, stack.push_back(ja[k]);
+  }
+  *connected = (PetscBool)(reached == n);
+  PetscCall(MatRestoreRowIJ(sub[0], 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+  PetscCall(MatDestroySubMatrices(1, &sub));
+  PetscFunctionReturn(0);
+}
+
+/* The dofs of all nonoverlapping and of all overlapping subdomains, as the PC uses them, and how
+   many of the nonoverlapping ones are connected in the graph of A. */
+static PetscErrorCode ReportSubdomains(PC pc, Mat A)
+{
+  PetscInt n, local[4] = {0, 0, 0, 0}, total[4];
   IS      *non, *ovl;
 
   PetscFunctionBegin;
@@ -261,8 +291,18 @@ static PetscErrorCode ReportSubdomains(PC pc)
     PetscCall(ISGetLocalSize(ovl[i], &b));
     local[1] += a, local[2] += b;
   }
-  PetscCallMPI(MPIU_Allreduce(local, total, 3, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "subdomains %" PetscInt_FMT " nonoverlapping dofs %" PetscInt_FMT " overlapping dofs %" PetscInt_FMT "\n", total[0], total[1], total[2]));
+  PetscInt nmax;
+  IS       empty;
+  PetscCallMPI(MPIU_Allreduce(&n, &nmax, 1, MPIU_INT, MPI_MAX, PETSC_COMM_WORLD));
+  PetscCall(ISCreateStride(PETSC_COMM_SELF, 0, 0, 1, &empty));
+  for (PetscInt i = 0; i < nmax; i++) {
+    PetscBool connected;
+    PetscCall(Connected(A, i < n ? non[i] : empty, &connected));
+    local[3] += i < n && connected;
+  }
+  PetscCall(ISDestroy(&empty));
+  PetscCallMPI(MPIU_Allreduce(local, total, 4, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "subdomains %" PetscInt_FMT " nonoverlapping dofs %" PetscInt_FMT " overlapping dofs %" PetscInt_FMT " connected %" PetscInt_FMT "\n", total[0], total[1], total[2], total[3]));
   PetscFunctionReturn(0);
 }
 
@@ -404,7 +444,7 @@ int main(int argc, char **argv)
   PetscCall(Report(ksp, A, t1 - t0, t2 - t1));
   if (checkPhi) PetscCall(CheckPhi(pc, rigid));
   if (checkCoarse) PetscCall(CheckCoarse(pc, A));
-  if (reportSubdomains) PetscCall(ReportSubdomains(pc));
+  if (reportSubdomains) PetscCall(ReportSubdomains(pc, A));
   if (resolveJump > 0) { /* new values, same pattern: the PC refactors and re-extends */
     p.jump = resolveJump;
     PetscCall(MatZeroEntries(A));

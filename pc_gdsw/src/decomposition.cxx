@@ -127,10 +127,81 @@ static PetscErrorCode BuildLocalGraph(Mat A, PetscInt bs, LocalGraph &g)
   PetscFunctionReturn(0);
 }
 
-/* Split the owned nodes into nparts with METIS (k-way); returns the part of each node. */
-static PetscErrorCode PartitionNodes(const LocalGraph &g, PetscInt nparts, std::vector<PetscInt> &part)
+/* Connected subdomains: each piece of a part that is not its largest goes to the neighbouring
+   part it shares the most edges with, until every part is connected (a piece with no neighbour,
+   on a disconnected graph, stays). METIS's own CONTIG option does the same inside its refinement
+   at several times the cost of the partition (2.7 against 0.7 s for 166 parts of 166 k nodes).
+   Counts the pieces moved. */
+static void MergeIslands(const LocalGraph &g, PetscInt nparts, std::vector<PetscInt> &part, PetscInt *moved)
+{
+  const PetscInt nn = (PetscInt)part.size();
+  std::vector<PetscInt> piece(nn), stack, size, largest(nparts, -1), weight(nparts, 0), touched;
+
+  *moved = 0;
+  for (PetscInt round = 0, changed = 1; changed && round < 20; round++) { /* a few rounds suffice; the bound guards a cycle */
+    changed = 0;
+    PetscInt npieces = 0;
+    std::fill(piece.begin(), piece.end(), -1);
+    size.clear();
+    for (PetscInt a = 0; a < nn; a++) {
+      if (piece[a] >= 0) continue;
+      piece[a] = npieces;
+      size.push_back(0);
+      for (stack.assign(1, a); !stack.empty();) {
+        const PetscInt b = stack.back();
+        stack.pop_back();
+        size[npieces]++;
+        for (PetscInt k = g.xadj[b]; k < g.xadj[b + 1]; k++) {
+          const PetscInt c = g.adj[k];
+          if (piece[c] < 0 && part[c] == part[b]) piece[c] = npieces, stack.push_back(c);
+        }
+      }
+      npieces++;
+    }
+    std::fill(largest.begin(), largest.end(), -1);
+    std::vector<PetscInt> first(npieces, -1);
+    for (PetscInt a = 0; a < nn; a++) {
+      PetscInt &l = largest[part[a]];
+      if (first[piece[a]] < 0) first[piece[a]] = a;
+      if (l < 0 || size[piece[a]] > size[l]) l = piece[a];
+    }
+    PetscInt used = 0;
+    for (PetscInt l : largest) used += l >= 0;
+    if (npieces == used) return;
+    for (PetscInt q = 0; q < npieces; q++) {
+      const PetscInt a0 = first[q], p = part[a0];
+      if (largest[p] == q) continue;
+      /* the piece's nodes, and the part it is most connected to */
+      std::vector<PetscInt> nodes(1, a0);
+      piece[a0] = -1 - q;
+      for (size_t t = 0; t < nodes.size(); t++)
+        for (PetscInt k = g.xadj[nodes[t]]; k < g.xadj[nodes[t] + 1]; k++) {
+          const PetscInt c = g.adj[k];
+          if (part[c] == p && piece[c] == q) piece[c] = -1 - q, nodes.push_back(c);
+          else if (part[c] != p) {
+            if (!weight[part[c]]) touched.push_back(part[c]);
+            weight[part[c]]++;
+          }
+        }
+      PetscInt best = -1;
+      for (PetscInt t : touched)
+        if (best < 0 || weight[t] > weight[best] || (weight[t] == weight[best] && t < best)) best = t;
+      for (PetscInt t : touched) weight[t] = 0;
+      touched.clear();
+      if (best < 0) continue;
+      for (PetscInt b : nodes) part[b] = best;
+      (*moved)++;
+      changed = 1;
+    }
+  }
+}
+
+/* Split the owned nodes into nparts with METIS (k-way), connected parts where the graph allows;
+   returns the part of each node. */
+static PetscErrorCode PartitionNodes(PC pc, const LocalGraph &g, PetscInt nparts, std::vector<PetscInt> &part)
 {
   const PetscInt nn = (PetscInt)g.xadj.size() - 1;
+  PetscInt       moved;
 
   PetscFunctionBegin;
   part.assign(nn, 0);
@@ -139,24 +210,15 @@ static PetscErrorCode PartitionNodes(const LocalGraph &g, PetscInt nparts, std::
     for (PetscInt a = 0; a < nn; a++) part[a] = a;
     PetscFunctionReturn(0);
   }
-  /* connected subdomains when the graph allows (METIS refuses CONTIG on a disconnected graph) */
-  std::vector<char>     seen(nn, 0);
-  std::vector<PetscInt> stack(1, 0);
-  PetscInt              reached = 0;
-  for (seen[0] = 1; !stack.empty(); reached++) {
-    const PetscInt a = stack.back();
-    stack.pop_back();
-    for (PetscInt k = g.xadj[a]; k < g.xadj[a + 1]; k++)
-      if (!seen[g.adj[k]]) seen[g.adj[k]] = 1, stack.push_back(g.adj[k]);
-  }
   std::vector<idx_t> xadj(g.xadj.begin(), g.xadj.end()), adj(g.adj.begin(), g.adj.end()), p(nn);
   idx_t nv = (idx_t)nn, ncon = 1, np = (idx_t)nparts, cut, options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
-  options[METIS_OPTION_SEED]   = 7; /* reproducible decompositions */
-  options[METIS_OPTION_CONTIG] = reached == nn;
+  options[METIS_OPTION_SEED] = 7; /* reproducible decompositions */
   int status = METIS_PartGraphKway(&nv, &ncon, xadj.data(), adj.data(), nullptr, nullptr, nullptr, &np, nullptr, nullptr, options, &cut, p.data());
   PetscCheck(status == METIS_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "PCGDSW: METIS_PartGraphKway failed (status %d) splitting %" PetscInt_FMT " nodes into %" PetscInt_FMT " subdomains", status, nn, nparts);
   for (PetscInt a = 0; a < nn; a++) part[a] = p[a];
+  MergeIslands(g, nparts, part, &moved);
+  if (moved) PetscCall(PetscInfo(pc, "%" PetscInt_FMT " disconnected pieces of METIS's parts joined to a neighbouring part\n", moved));
   PetscFunctionReturn(0);
 }
 
@@ -203,7 +265,7 @@ static PetscErrorCode AlgebraicSubdomains(PC pc, std::vector<std::vector<PetscIn
   PetscCall(BuildLocalGraph(A, bs, g));
   const PetscInt nn = (rend - rstart) / bs, n0 = rstart / bs;
   const PetscInt requested = RequestedParts(gd, rend - rstart);
-  PetscCall(PartitionNodes(g, requested, part));
+  PetscCall(PartitionNodes(pc, g, requested, part));
   PetscCall(DropEmptyParts(pc, part, requested, &nparts));
   PetscCallMPI(MPI_Scan(&nparts, &first, 1, MPIU_INT, MPI_SUM, comm));
   first -= nparts;
@@ -378,7 +440,7 @@ static PetscErrorCode MatISSubdomains(PC pc, std::vector<IS> &non, std::vector<s
   PetscCall(MatISRestoreLocalMat(pc->pmat, &lA));
   PetscCall(BuildLocalGraph(lAij, bs, g));
   PetscCall(MatDestroy(&lAij));
-  PetscCall(PartitionNodes(g, requested, part));
+  PetscCall(PartitionNodes(pc, g, requested, part));
   PetscCall(DropEmptyParts(pc, part, requested, &nparts));
   std::vector<std::vector<PetscInt>> omega(nparts);
   parts.assign(nparts, {});
