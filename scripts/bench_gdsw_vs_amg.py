@@ -7,6 +7,10 @@ BoomerAMG and PETSc's own GDSW, with gdsw's defaults and each of its levers.
   ex71   PETSc's ksp/tutorials/ex71 -pde_type Elasticity -dim 3 -cells 31,31,31 (MATIS; the AMGs
          get the same matrix as AIJ), 2 ranks
   cube   pc_gdsw/examples/elasticity.cxx -n 54 (Q1, 499,125 dofs), 2 ranks
+  plate  PETSc's snes/tutorials/ex17 clamped and stretched plate (its ge testset) 10 x 10 x t,
+         80 x 80 x 2 Q1 cells (58,077 dofs), t = 0.5, 0.05, 0.005 (cells of aspect ratio 0.5, 5,
+         50), PTScotch's mesh partition on 2 ranks; and t = 0.05 with PETSc's simple partition,
+         which gives each rank one layer of cells (gdsw with and without -pc_gdsw_repartition)
 CG to rtol 1e-8 in the unpreconditioned norm, zero initial guess. Per run: iterations, set-up
 (PCSetUp) and solve (KSPSolve) time from -log_view (max over ranks), peak memory (sum over ranks);
 each command runs --repeat times (default 3) back to back and the row holds the median time.
@@ -25,6 +29,7 @@ top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 build = os.environ.get("GDSW_BUILD", os.path.join(top, "build"))
 EX56 = os.path.join(build, "tests", "petsc_ksp_ksp_ex56")
 EX71 = os.path.join(build, "tests", "petsc_ksp_ksp_ex71")
+EX17 = os.path.join(build, "tests", "petsc_snes_ex17")
 ELASTICITY = os.path.join(build, "pc_gdsw", "gdsw_elasticity")
 LIB = os.path.join(build, "pc_gdsw", "libpetscgdsw.so")
 quick = "--quick" in sys.argv
@@ -57,16 +62,29 @@ METHODS = {
 AMG = ["GAMG", "ML", "BoomerAMG", "BoomerAMG nodal"]
 # PETSc's GDSW converts an AIJ operator to MATIS with one subdomain per rank: 266 s on the cube
 NO_PETSC_GDSW = [m for m in METHODS if m != "PETSc GDSW (PCMG)"]
+METHODS["gdsw repartitioned"] = f"{GDSW} -pc_gdsw_repartition"
+PLATE_METHODS = ["gdsw (defaults)", "gdsw RGDSW", "gdsw adaptive", "GAMG", "ML", "BoomerAMG", "BoomerAMG nodal", "PETSc GDSW (PCMG)"]
+
+
+def plate(thickness, faces, partitioner):
+    """snes ex17's ge plate, 10 x 10 x thickness; -ksp_view_mat ::ascii_info prints its size."""
+    h = thickness / 2
+    return (f"{EX17} -dm_plex_dim 3 -dm_plex_simplex 0 -dm_plex_box_lower -5,-5,{-h:g} -dm_plex_box_upper 5,5,{h:g} "
+            f"-dm_plex_box_faces {faces} -dm_plex_separate_marker -petscpartitioner_type {partitioner} -sol_type elas_ge "
+            "-displacement_petscspace_degree 1 -snes_type ksponly -ksp_view_mat ::ascii_info")
 
 
 def problems():
     """(name, ranks, command before the solver options, methods)."""
-    ne, cells, n = (11, 11, 20) if quick else (31, 31, 54)
+    ne, cells, n, faces = (11, 11, 20, "20,20,2") if quick else (31, 31, 54, "80,80,2")
     ex56 = f"{EX56} -ne {ne} -use_mat_nearnullspace"
+    plates = [(f"plate t={t:g}", 2, f"mpiexec -n 2 {plate(t, faces, 'ptscotch')}", PLATE_METHODS) for t in (0.5, 0.05, 0.005)]
     return [("ex56", 1, f"mpiexec -n 1 {ex56}", list(METHODS)),
             ("ex56 (2 ranks, all rows on rank 0)", 2, f"mpiexec -n 2 {ex56}", [m for m in METHODS if m.startswith("gdsw")] + ["ML"]),
             ("ex71 MATIS", 2, f"mpiexec -n 2 {EX71} -pde_type Elasticity -dim 3 -cells {cells},{cells},{cells}", list(METHODS)),
-            ("cube", 2, f"mpiexec -n 2 {ELASTICITY} -n {n}", NO_PETSC_GDSW)]
+            ("cube", 2, f"mpiexec -n 2 {ELASTICITY} -n {n}", NO_PETSC_GDSW)] + plates + [
+            ("plate t=0.05 (simple partition: one layer per rank)", 2, f"mpiexec -n 2 {plate(0.05, faces, 'simple')}",
+             ["gdsw (defaults)", "gdsw repartitioned", "GAMG", "ML"])]
 
 
 def main():
@@ -115,8 +133,12 @@ def plot(rows):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     names = list(dict.fromkeys(r["problem"] for r in rows))
-    fig, axes = plt.subplots(1, len(names), figsize=(5.5 * len(names), 5), squeeze=False)
-    for ax, name in zip(axes[0], names):
+    cols = min(4, len(names))
+    rows_ = -(-len(names) // cols)
+    fig, axes = plt.subplots(rows_, cols, figsize=(5.5 * cols, 4.5 * rows_), squeeze=False)
+    for ax in axes.flat[len(names):]:
+        ax.axis("off")
+    for ax, name in zip(axes.flat, names):
         group = [r for r in rows if r["problem"] == name and r["status"] == "ok"]
         labels = [r["method"] for r in group]
         setup = [float(r["setup_s"]) for r in group]
@@ -131,7 +153,7 @@ def plot(rows):
         ax.invert_yaxis()
         ax.set_xlabel("seconds (median)")
         ax.set_title(name, fontsize=9)
-    axes[0][0].legend(fontsize=7)
+    axes.flat[0].legend(fontsize=7)
     fig.suptitle("PCSetUp + KSPSolve, CG to 1e-8 (unpreconditioned norm)", fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(results, "gdsw_vs_amg.png"), dpi=110)

@@ -44,7 +44,7 @@ def measure_solve(cmd, timeout):
         m = re.search(rf"^{name}\s+\d+ \S+ (\S+)", out, re.M)
         return float(m.group(1)) if m else float("nan")
     reason = re.search(r"Linear solve (?:converged|did not converge) due to (\w+) iterations (\d+)", out)
-    dofs = re.search(r"^dofs (\d+)|unknowns: structure (\d+)", out, re.M)
+    dofs = re.search(r"^dofs (\d+)|unknowns: structure (\d+)|^\s+rows=(\d+), cols", out, re.M)
     mem = re.search(r"Maximum \(over computational time\) process memory:\s+total (\S+)", out)
     if "benchlib: TIMEOUT" in out:
         status = f"timeout ({timeout} s)"

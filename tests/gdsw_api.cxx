@@ -3,8 +3,9 @@ static const char help[] = "Exercises PCGDSW's API on a nonsymmetric problem: up
                            "-Laplace(u) + beta (1, 1/2) . grad(u) = 1 on the unit square, zero on its boundary, n x n interior nodes.\n"
                            "  -case transpose  <P^T x, y> = <x, P y> for random x, y; GMRES with KSPSolve and KSPSolveTranspose\n"
                            "  -case setters    a solve, then the setter named by -set changes its parameter, and a second solve\n"
-                           "  -set <overlap>   subdomains (4 per rank), subdomain_size (200), overlap (2), coarse_space (none),\n"
-                           "                   combination (multiplicative) or first_level_type (restricted)\n"
+                           "  -set <overlap>   subdomains (4 per rank), repartition (true), subdomain_size (200), overlap (2),\n"
+                           "                   coarse_space (none), combination (multiplicative), first_level_type (restricted)\n"
+                           "                   or local_solver (incomplete)\n"
                            "  -n <32> -beta <20>  grid and wind speed\n"
                            "  -rounds <1>      run the case this many times, each between its own PetscInitialize() and PetscFinalize()\n"
                            "Every case prints the PC's settings as its getters return them.\n";
@@ -44,10 +45,11 @@ static PetscErrorCode PrintSettings(PC pc)
   PCGDSWFirstLevelType  first;
   PCGDSWLocalSolverType local;
   PetscReal             conditionMax;
-  PetscBool             rotations, reuse;
+  PetscBool             rotations, reuse, repartition;
 
   PetscFunctionBegin;
   PetscCall(PCGDSWGetSubdomainsPerRank(pc, &nsub));
+  PetscCall(PCGDSWGetRepartition(pc, &repartition));
   PetscCall(PCGDSWGetSubdomainSize(pc, &size));
   PetscCall(PCGDSWGetOverlap(pc, &overlap));
   PetscCall(PCGDSWGetCoarseSpaceType(pc, &coarse));
@@ -58,8 +60,8 @@ static PetscErrorCode PrintSettings(PC pc)
   PetscCall(PCGDSWGetReuseCoarseBasis(pc, &reuse));
   PetscCall(PCGDSWGetLocalSolverType(pc, &local));
   PetscCall(PCGDSWGetLocalConditionMax(pc, &conditionMax));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "settings: subdomains %" PetscInt_FMT " subdomain_size %" PetscInt_FMT " overlap %" PetscInt_FMT " coarse_space %s rgdsw_weights %s rotations %d combination %s first_level_type %s reuse_coarse_basis %d local_solver %s local_condition_max %g\n",
-                        nsub, size, overlap, PCGDSWCoarseSpaceTypes[coarse], PCGDSWRGDSWWeightTypes[weights], (int)rotations, PCGDSWCombinationTypes[combination], PCGDSWFirstLevelTypes[first], (int)reuse, PCGDSWLocalSolverTypes[local], (double)conditionMax));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "settings: subdomains %" PetscInt_FMT " repartition %d subdomain_size %" PetscInt_FMT " overlap %" PetscInt_FMT " coarse_space %s rgdsw_weights %s rotations %d combination %s first_level_type %s reuse_coarse_basis %d local_solver %s local_condition_max %g\n",
+                        nsub, (int)repartition, size, overlap, PCGDSWCoarseSpaceTypes[coarse], PCGDSWRGDSWWeightTypes[weights], (int)rotations, PCGDSWCombinationTypes[combination], PCGDSWFirstLevelTypes[first], (int)reuse, PCGDSWLocalSolverTypes[local], (double)conditionMax));
   PetscFunctionReturn(0);
 }
 
@@ -158,6 +160,7 @@ static PetscErrorCode ChangeOne(PC pc)
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-set", name, sizeof(name), nullptr));
   const std::string what = name;
   if (what == "subdomains") PetscCall(PCGDSWSetSubdomainsPerRank(pc, 4));
+  else if (what == "repartition") PetscCall(PCGDSWSetRepartition(pc, PETSC_TRUE));
   else if (what == "subdomain_size") PetscCall(PCGDSWSetSubdomainSize(pc, 200));
   else if (what == "overlap") PetscCall(PCGDSWSetOverlap(pc, 2));
   else if (what == "coarse_space") PetscCall(PCGDSWSetCoarseSpaceType(pc, PC_GDSW_COARSE_NONE));

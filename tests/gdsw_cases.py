@@ -13,6 +13,7 @@ ELASTICITY = os.path.join(BUILD, "pc_gdsw", "gdsw_elasticity")
 BAD_INPUT = os.path.join(BUILD, "tests", "gdsw_bad_input")
 EX56 = os.path.join(BUILD, "tests", "petsc_ksp_ksp_ex56")
 EX71 = os.path.join(BUILD, "tests", "petsc_ksp_ksp_ex71")
+EX17 = os.path.join(BUILD, "tests", "petsc_snes_ex17")
 
 
 def elasticity(*opts, np=1):
@@ -368,6 +369,55 @@ def robust_floating():
     converges_within(["-n", 12, "-floating", "-boxes", 3, "-jump", "1e6", "-jump_boxes", 3], 22, "GDSW, floating, jump 1e6")
 
 
+def plate(thickness, *opts, partitioner="ptscotch", view=False):
+    """snes ex17's clamped and stretched plate (its ge testset) 10 x 10 x `thickness`, 40 x 40 x 2
+    Q1 cells, the mesh partitioned by `partitioner` on 2 ranks, 16 subdomains; CG iterations to
+    1e-8 (and the output, with view)."""
+    h = thickness / 2
+    out = run([EX17, "-dm_plex_dim", 3, "-dm_plex_simplex", 0, "-dm_plex_box_lower", f"-5,-5,{-h}", "-dm_plex_box_upper", f"5,5,{h}",
+               "-dm_plex_box_faces", "40,40,2", "-dm_plex_separate_marker", "-petscpartitioner_type", partitioner, "-sol_type", "elas_ge",
+               "-displacement_petscspace_degree", 1, "-snes_type", "ksponly", "-ksp_type", "cg", "-ksp_rtol", "1e-8",
+               "-ksp_norm_type", "unpreconditioned", "-ksp_max_it", 1000, "-ksp_converged_reason",
+               "-dll_append", LIB, "-pc_type", "gdsw", "-pc_gdsw_subdomains", 8] + list(opts) + (["-ksp_view"] if view else []), 2)
+    return (cg_iterations(out), out) if view else cg_iterations(out)
+
+
+@case
+def robust_thin_plate():
+    """A plate 200 and 2000 times as wide as thick (cells of aspect ratio 5 and 50), where
+    smoothed aggregation degrades (GAMG 570 and 1578 iterations): GDSW's iterations do not grow
+    with the thinness (measured 35 and 38). The rotations in the coarse space carry the bending:
+    with translations only it needs 251 and 258."""
+    for t in (0.05, 0.005):
+        gdsw = plate(t)
+        between(gdsw, 1, 45, f"GDSW, plate thickness {t}")
+        translations = plate(t, "-pc_gdsw_rotations", 0)
+        assert translations > 4 * gdsw, (t, translations, gdsw)
+
+
+@case
+def repartition():
+    """The plate's cells split between the ranks in their order (PETSc's simple partitioner) give
+    each rank one layer of the thickness, and subdomains within a rank's rows are thin: 123
+    iterations. -pc_gdsw_repartition splits the whole node graph instead (PTScotch here) and
+    recovers the well-partitioned count (35 with PTScotch's mesh partition; 25-42 here, as PTScotch's
+    parts vary from run to run). With every row on
+    rank 0 (ksp ex56 on 2 ranks) the partitioner also fills the empty rank: 3 + 3 subdomains, and
+    the iterations of 6 subdomains on one rank (36)."""
+    thin = plate(0.05, partitioner="simple")
+    whole, out = plate(0.05, "-pc_gdsw_repartition", partitioner="simple", view=True)
+    assert "repartitioned (-pc_gdsw_repartition): the whole matrix graph split by ptscotch, not each rank's rows; 8 subdomains on rank 0" in out
+    assert "16 subdomains (from the matrix graph)" in out
+    between(whole, 1, 55, "repartitioned plate")
+    assert thin > 2 * whole, (thin, whole)
+    ex56 = [EX56, "-ne", 15, "-use_mat_nearnullspace", "-ksp_type", "cg", "-ksp_rtol", "1e-8", "-ksp_converged_reason", "-ksp_view",
+            "-dll_append", LIB, "-pc_type", "gdsw", "-pc_gdsw_subdomains", 3, "-pc_gdsw_repartition"]
+    out = run(ex56, 2)
+    assert "6 subdomains (from the matrix graph)" in out and "redistributed" not in out
+    assert "split by ptscotch, not each rank's rows; 3 subdomains on rank 0" in out
+    between(cg_iterations(out), 30, 42, "ex56 on 2 ranks, repartitioned")
+
+
 # ---- the PC as seen by PETSc users -----------------------------------------------------------
 @case
 def view_and_log():
@@ -381,7 +431,7 @@ def view_and_log():
                        (["-pc_gdsw_subdomains", 3], "subdomains per rank: 3, given (-pc_gdsw_subdomains)")):
         assert line in run([ELASTICITY, "-n", 16, "-ksp_view"] + opts, 2), f"missing in -ksp_view: {line!r}"
     out = run([ELASTICITY, "-n", 4, "-boxes", 2, "-help"])
-    for s in ("-pc_gdsw_subdomains <now -1", "-pc_gdsw_subdomain_size <now", "-pc_gdsw_overlap <now 1", "-pc_gdsw_coarse_space <now gdsw", "-pc_gdsw_rgdsw_weights <now distance", "-pc_gdsw_rotations: <TRUE",
+    for s in ("-pc_gdsw_subdomains <now -1", "-pc_gdsw_subdomain_size <now", "-pc_gdsw_overlap <now 1", "-pc_gdsw_coarse_space <now gdsw", "-pc_gdsw_rgdsw_weights <now distance", "-pc_gdsw_rotations: <TRUE", "-pc_gdsw_repartition: <FALSE",
               "-pc_gdsw_combination <now additive", "-pc_gdsw_first_level_type <now additive", "-pc_gdsw_reuse_coarse_basis: <FALSE",
               "-pc_gdsw_local_solver <now exact", "-pc_gdsw_local_condition_max <25.", "-pc_gdsw_subdomain_size <now 12000",
               "-pc_gdsw_sub_pc_type", "-pc_gdsw_extension_pc_type", "-pc_gdsw_coarse_pc_type"):
@@ -602,7 +652,7 @@ def api_setters_reset():
 @case
 def api_getters():
     """Every -pc_gdsw_* option reaches its setter: the getters return what the options say."""
-    opts = {"subdomains": 3, "subdomain_size": 500, "overlap": 2, "coarse_space": "rgdsw", "rgdsw_weights": "equal",
+    opts = {"subdomains": 3, "repartition": 1, "subdomain_size": 500, "overlap": 2, "coarse_space": "rgdsw", "rgdsw_weights": "equal",
             "rotations": 0, "combination": "multiplicative", "first_level_type": "restricted", "reuse_coarse_basis": 1,
             "local_solver": "adaptive", "local_condition_max": 40.5}
     args = []
@@ -769,6 +819,7 @@ def bad_option_values():
                             ("combination", "both", "is not one of: additive, multiplicative"),
                             ("first_level_type", "ras", "is not one of: additive, restricted"),
                             ("rotations", "maybe", "is not true or false"),
+                            ("repartition", "always", "is not true or false"),
                             ("reuse_coarse_basis", 2, "is not true or false"),
                             ("local_solver", "fast", "is not one of: exact, incomplete, adaptive"),
                             ("local_condition_max", "big", "is not a number: give the largest condition number estimate"),

@@ -57,6 +57,8 @@ PETSC_EXTERN PetscErrorCode PCGDSWSetSubdomains(PC, PetscInt, IS[], IS[]);
 PETSC_EXTERN PetscErrorCode PCGDSWGetSubdomains(PC, PetscInt *, IS *[], IS *[]);
 PETSC_EXTERN PetscErrorCode PCGDSWSetSubdomainsPerRank(PC, PetscInt);
 PETSC_EXTERN PetscErrorCode PCGDSWGetSubdomainsPerRank(PC, PetscInt *);
+PETSC_EXTERN PetscErrorCode PCGDSWSetRepartition(PC, PetscBool);
+PETSC_EXTERN PetscErrorCode PCGDSWGetRepartition(PC, PetscBool *);
 PETSC_EXTERN PetscErrorCode PCGDSWSetSubdomainSize(PC, PetscInt);
 PETSC_EXTERN PetscErrorCode PCGDSWGetSubdomainSize(PC, PetscInt *);
 PETSC_EXTERN PetscErrorCode PCGDSWSetOverlap(PC, PetscInt);

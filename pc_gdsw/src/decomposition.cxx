@@ -246,29 +246,104 @@ static PetscErrorCode DropEmptyParts(PC pc, std::vector<PetscInt> &part, PetscIn
   PetscFunctionReturn(0);
 }
 
-/* Algebraic subdomains: parts P_i of the owned nodes, and Omega~_i = P_i plus the neighbours
-   that belong to subdomains of larger id. The interface is then one layer of nodes, shared by
-   a subdomain and its lower-numbered neighbours, as with element-based subdomains. */
+/* Global subdomain id of every owned node, and the number of subdomains: METIS parts of the
+   rank's node graph, numbered rank after rank; or, with -pc_gdsw_repartition, the parts of a
+   parallel partitioner (MatPartitioning, prefix -pc_gdsw_) of the whole node graph, for ranks
+   whose rows are not compact in the mesh (a plate split through its thickness). */
+static PetscErrorCode PartOfOwnedNodes(PC pc, const LocalGraph &g, PetscInt n0, std::vector<PetscInt> &gpart, PetscInt *ntotal)
+{
+  PC_GDSW       *gd = (PC_GDSW *)pc->data;
+  const PetscInt nn = (PetscInt)g.xadj.size() - 1;
+  MPI_Comm       comm;
+
+  PetscFunctionBegin;
+  PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
+  if (!gd->repartition) {
+    const PetscInt requested = RequestedParts(gd, nn * gd->bs);
+    PetscInt       nparts, first;
+    PetscCall(PartitionNodes(pc, g, requested, gpart));
+    PetscCall(DropEmptyParts(pc, gpart, requested, &nparts));
+    PetscCallMPI(MPI_Scan(&nparts, &first, 1, MPIU_INT, MPI_SUM, comm));
+    first -= nparts;
+    for (PetscInt &p : gpart) p += first;
+    PetscCallMPI(MPIU_Allreduce(&nparts, ntotal, 1, MPIU_INT, MPI_SUM, comm));
+    PetscFunctionReturn(0);
+  }
+  PetscInt    nnodes, ndofs;
+  PetscMPIInt size;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(MatGetSize(gd->A, &ndofs, nullptr));
+  nnodes                 = ndofs / gd->bs;
+  const PetscInt request = gd->nsubPerRank != PETSC_DECIDE ? gd->nsubPerRank * size : std::max<PetscInt>(1, (PetscInt)std::lround((double)ndofs / GDSWSubdomainSizeTarget(gd)));
+  /* the node graph in global ids, each row the sorted union of its owned and ghost neighbours */
+  PetscInt *ia, *ja;
+  PetscCall(PetscMalloc1(nn + 1, &ia));
+  PetscCall(PetscMalloc1(g.adj.size() + g.gadj.size(), &ja));
+  ia[0] = 0;
+  for (PetscInt a = 0; a < nn; a++) {
+    PetscInt *end = ja + ia[a];
+    for (PetscInt k = g.xadj[a]; k < g.xadj[a + 1]; k++) *end++ = n0 + g.adj[k];
+    end = std::copy(g.gadj.begin() + g.gxadj[a], g.gadj.begin() + g.gxadj[a + 1], end);
+    std::sort(ja + ia[a], end);
+    ia[a + 1] = (PetscInt)(end - ja);
+  }
+  Mat             adj;
+  MatPartitioning mp;
+  IS              is;
+  const PetscInt *p;
+  const char     *prefix, *type;
+  PetscCall(MatCreateMPIAdj(comm, nn, nnodes, ia, ja, nullptr, &adj)); /* takes ia, ja */
+  PetscCall(MatPartitioningCreate(comm, &mp));
+  PetscCall(MatPartitioningSetAdjacency(mp, adj));
+  PetscCall(MatPartitioningSetNParts(mp, request));
+  PetscCall(PCGetOptionsPrefix(pc, &prefix));
+  PetscCall(PetscObjectSetOptionsPrefix((PetscObject)mp, prefix));
+  PetscCall(PetscObjectAppendOptionsPrefix((PetscObject)mp, "pc_gdsw_"));
+  PetscCall(MatPartitioningSetFromOptions(mp));
+  PetscCall(MatPartitioningGetType(mp, &type));
+  PetscCall(MatPartitioningApply(mp, &is));
+  PetscCall(PetscStrncpy(gd->partitioner, type, sizeof(gd->partitioner)));
+  PetscCall(ISGetIndices(is, &p));
+  gpart.assign(p, p + nn);
+  PetscCall(ISRestoreIndices(is, &p));
+  PetscCall(ISDestroy(&is));
+  PetscCall(MatPartitioningDestroy(&mp));
+  PetscCall(MatDestroy(&adj));
+  /* number the nonempty parts 0, 1, ... in their order */
+  std::vector<PetscInt> count(request, 0);
+  for (PetscInt q : gpart) count[q]++;
+  PetscCallMPI(MPIU_Allreduce(MPI_IN_PLACE, count.data(), (PetscMPIInt)request, MPIU_INT, MPI_SUM, comm));
+  *ntotal = 0;
+  for (PetscInt &c : count) c = c ? (*ntotal)++ : -1;
+  for (PetscInt &q : gpart) q = count[q];
+  PetscCall(PetscInfo(pc, "%" PetscInt_FMT " subdomains from %s's partition of the whole node graph (%" PetscInt_FMT " requested)\n", *ntotal, gd->partitioner, request));
+  PetscFunctionReturn(0);
+}
+
+/* Algebraic subdomains: parts P_i of the nodes, and Omega~_i = P_i plus the neighbours that
+   belong to subdomains of larger id. The interface is then one layer of nodes, shared by a
+   subdomain and its lower-numbered neighbours, as with element-based subdomains. Subdomain i
+   lives on the rank that owns its nodes (METIS within the rank) or, repartitioned, on rank
+   floor(i size / N): the owners of its nodes send them there. */
 static PetscErrorCode AlgebraicSubdomains(PC pc, std::vector<std::vector<PetscInt>> &parts)
 {
   PC_GDSW   *gd = (PC_GDSW *)pc->data;
   Mat        A  = gd->A;
   const PetscInt bs = gd->bs;
   LocalGraph g;
-  std::vector<PetscInt> part;
-  PetscInt   rstart, rend, first, nparts;
+  std::vector<PetscInt> gpart;
+  PetscInt   rstart, rend, ntotal;
   MPI_Comm   comm;
+  PetscMPIInt size, rank;
 
   PetscFunctionBegin;
   PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(MatGetOwnershipRange(A, &rstart, &rend));
   PetscCall(BuildLocalGraph(A, bs, g));
   const PetscInt nn = (rend - rstart) / bs, n0 = rstart / bs;
-  const PetscInt requested = RequestedParts(gd, rend - rstart);
-  PetscCall(PartitionNodes(pc, g, requested, part));
-  PetscCall(DropEmptyParts(pc, part, requested, &nparts));
-  PetscCallMPI(MPI_Scan(&nparts, &first, 1, MPIU_INT, MPI_SUM, comm));
-  first -= nparts;
+  PetscCall(PartOfOwnedNodes(pc, g, n0, gpart, &ntotal));
 
   /* subdomain id of every owned dof, and of the ghost neighbours */
   Vec      sid, ghostSid;
@@ -279,7 +354,7 @@ static PetscErrorCode AlgebraicSubdomains(PC pc, std::vector<std::vector<PetscIn
     PetscScalar *s;
     PetscCall(VecGetArray(sid, &s));
     for (PetscInt a = 0; a < nn; a++)
-      for (PetscInt c = 0; c < bs; c++) s[a * bs + c] = (PetscScalar)(first + part[a]);
+      for (PetscInt c = 0; c < bs; c++) s[a * bs + c] = (PetscScalar)gpart[a];
     PetscCall(VecRestoreArray(sid, &s));
   }
   std::vector<PetscInt> ghostNodes(g.gadj);
@@ -295,18 +370,20 @@ static PetscErrorCode AlgebraicSubdomains(PC pc, std::vector<std::vector<PetscIn
   const PetscScalar *gs;
   PetscCall(VecGetArrayRead(ghostSid, &gs));
 
-  parts.assign(nparts, {});
-  std::vector<std::vector<PetscInt>> omega(nparts);
+  /* records (i, node, in P_i) for the rank of subdomain i */
+  auto owner = [&](PetscInt i) { return gd->repartition ? (PetscMPIInt)(((long long)i * size) / ntotal) : rank; };
+  std::vector<std::vector<PetscInt>> out(size);
+  auto put = [](std::vector<PetscInt> &o, PetscInt i, PetscInt node, PetscInt inP) { o.push_back(i), o.push_back(node), o.push_back(inP); };
   for (PetscInt a = 0; a < nn; a++) {
-    const PetscInt i = part[a];
-    parts[i].push_back(n0 + a);
-    omega[i].push_back(n0 + a);
+    const PetscInt i = gpart[a];
+    auto          &o = out[owner(i)];
+    put(o, i, n0 + a, 1);
     for (PetscInt k = g.xadj[a]; k < g.xadj[a + 1]; k++)
-      if (part[g.adj[k]] > i) omega[i].push_back(n0 + g.adj[k]);
+      if (gpart[g.adj[k]] > i) put(o, i, n0 + g.adj[k], 0);
     for (PetscInt k = g.gxadj[a]; k < g.gxadj[a + 1]; k++) {
       const PetscInt m = g.gadj[k];
       const PetscInt s = (PetscInt)PetscRealPart(gs[std::lower_bound(ghostNodes.begin(), ghostNodes.end(), m) - ghostNodes.begin()]);
-      if (s > first + i) omega[i].push_back(m);
+      if (s > i) put(o, i, m, 0);
     }
   }
   PetscCall(VecRestoreArrayRead(ghostSid, &gs));
@@ -314,13 +391,36 @@ static PetscErrorCode AlgebraicSubdomains(PC pc, std::vector<std::vector<PetscIn
   PetscCall(VecDestroy(&ghostSid));
   PetscCall(ISDestroy(&ghostIS));
   PetscCall(VecDestroy(&sid));
+  std::vector<PetscInt> rec;
+  if (gd->repartition) {
+    std::vector<PetscMPIInt> scount(size), rcount(size), sdispl(size + 1, 0), rdispl(size + 1, 0);
+    for (PetscMPIInt r = 0; r < size; r++) scount[r] = (PetscMPIInt)out[r].size();
+    PetscCallMPI(MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, comm));
+    std::vector<PetscInt> sbuf;
+    for (PetscMPIInt r = 0; r < size; r++) sdispl[r + 1] = sdispl[r] + scount[r], rdispl[r + 1] = rdispl[r] + rcount[r], sbuf.insert(sbuf.end(), out[r].begin(), out[r].end());
+    rec.resize(rdispl[size]);
+    PetscCallMPI(MPI_Alltoallv(sbuf.data(), scount.data(), sdispl.data(), MPIU_INT, rec.data(), rcount.data(), rdispl.data(), MPIU_INT, comm));
+  } else rec.swap(out[rank]);
 
-  gd->sub->assign(nparts, Subdomain());
-  for (PetscInt i = 0; i < nparts; i++) {
+  std::vector<PetscInt> ids;
+  for (size_t k = 0; k < rec.size(); k += 3) ids.push_back(rec[k]);
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  const PetscInt nloc = (PetscInt)ids.size();
+  parts.assign(nloc, {});
+  std::vector<std::vector<PetscInt>> omega(nloc);
+  for (size_t k = 0; k < rec.size(); k += 3) {
+    const PetscInt i = (PetscInt)(std::lower_bound(ids.begin(), ids.end(), rec[k]) - ids.begin());
+    omega[i].push_back(rec[k + 1]);
+    if (rec[k + 2]) parts[i].push_back(rec[k + 1]);
+  }
+  gd->sub->assign(nloc, Subdomain());
+  for (PetscInt i = 0; i < nloc; i++) {
     auto &o = omega[i];
     std::sort(o.begin(), o.end());
     o.erase(std::unique(o.begin(), o.end()), o.end());
-    (*gd->sub)[i].gid   = first + i;
+    std::sort(parts[i].begin(), parts[i].end());
+    (*gd->sub)[i].gid   = ids[i];
     (*gd->sub)[i].nodes = o;
   }
   PetscFunctionReturn(0);

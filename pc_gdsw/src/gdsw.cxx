@@ -311,6 +311,7 @@ static PetscErrorCode PCSetFromOptions_GDSW(PC pc, PetscOptionItems *PetscOption
   PetscCall(CheckOptionValue(pc, "-pc_gdsw_coarse_space", OPTION_ELIST, PCGDSWCoarseSpaceTypes, nullptr));
   PetscCall(CheckOptionValue(pc, "-pc_gdsw_rgdsw_weights", OPTION_ELIST, PCGDSWRGDSWWeightTypes, nullptr));
   PetscCall(CheckOptionValue(pc, "-pc_gdsw_rotations", OPTION_BOOL, nullptr, nullptr));
+  PetscCall(CheckOptionValue(pc, "-pc_gdsw_repartition", OPTION_BOOL, nullptr, nullptr));
   PetscCall(CheckOptionValue(pc, "-pc_gdsw_combination", OPTION_ELIST, PCGDSWCombinationTypes, nullptr));
   PetscCall(CheckOptionValue(pc, "-pc_gdsw_first_level_type", OPTION_ELIST, PCGDSWFirstLevelTypes, nullptr));
   PetscCall(CheckOptionValue(pc, "-pc_gdsw_reuse_coarse_basis", OPTION_BOOL, nullptr, nullptr));
@@ -324,6 +325,8 @@ static PetscErrorCode PCSetFromOptions_GDSW(PC pc, PetscOptionItems *PetscOption
   if (flg) PetscCall(PCGDSWSetLocalConditionMax(pc, r));
   PetscCall(PetscOptionsInt("-pc_gdsw_subdomains", "Subdomains per MPI rank (METIS on the rank's node graph); -1 (PETSC_DECIDE): about -pc_gdsw_subdomain_size dofs each", "PCGDSWSetSubdomainsPerRank", gd->nsubPerRank, &n, &flg));
   if (flg) PetscCall(PCGDSWSetSubdomainsPerRank(pc, n));
+  PetscCall(PetscOptionsBool("-pc_gdsw_repartition", "Subdomains from a parallel partition of the whole matrix graph (MatPartitioning, options -pc_gdsw_mat_partitioning_*) instead of METIS within each rank's rows", "PCGDSWSetRepartition", gd->repartition, &b, &flg));
+  if (flg) PetscCall(PCGDSWSetRepartition(pc, b));
   PetscCall(PetscOptionsInt("-pc_gdsw_subdomain_size", "Target dofs per subdomain when -pc_gdsw_subdomains is not given (the fastest on 3D elasticity here: 12000 with exact local solvers, 3000 with incomplete or adaptive ones)", "PCGDSWSetSubdomainSize", GDSWSubdomainSizeTarget(gd), &n, &flg));
   if (flg) PetscCall(PCGDSWSetSubdomainSize(pc, n));
   PetscCall(PetscOptionsInt("-pc_gdsw_overlap", "Overlap in layers of the matrix graph (used when the caller gives no overlapping subdomains)", "PCGDSWSetOverlap", gd->overlap, &n, &flg));
@@ -366,6 +369,7 @@ static PetscErrorCode PCView_GDSW(PC pc, PetscViewer viewer)
   if (gd->nUser < 0) {
     if (gd->nsubPerRank == PETSC_DECIDE) PetscCall(PetscViewerASCIIPrintf(viewer, "  subdomains per rank: chosen by the size rule, about %" PetscInt_FMT " dofs each (-pc_gdsw_subdomain_size): %" PetscInt_FMT " on rank 0\n", GDSWSubdomainSizeTarget(gd), gd->nsubRank0));
     else PetscCall(PetscViewerASCIIPrintf(viewer, "  subdomains per rank: %" PetscInt_FMT ", given (-pc_gdsw_subdomains)\n", gd->nsubPerRank));
+    if (gd->repartition && !isIS) PetscCall(PetscViewerASCIIPrintf(viewer, "  repartitioned (-pc_gdsw_repartition): the whole matrix graph split by %s, not each rank's rows; %" PetscInt_FMT " subdomains on rank 0\n", gd->partitioner, gd->nsubRank0));
     if (gd->balanced) PetscCall(PetscViewerASCIIPrintf(viewer, "  the ranks' rows are unbalanced: the subdomains were redistributed, %" PetscInt_FMT " on rank 0\n", gd->nsubRank0));
   }
   PetscCall(PetscViewerASCIIPrintf(viewer, "  %" PetscInt_FMT " subdomains (%s), overlap %s, %" PetscInt_FMT " dofs per node, %" PetscInt_FMT " null-space vectors%s\n", gd->nGlobalSubdomains, source,
@@ -479,6 +483,23 @@ static PetscErrorCode PCGDSWGetSubdomainsPerRank_GDSW(PC pc, PetscInt *n)
 {
   PetscFunctionBegin;
   *n = ((PC_GDSW *)pc->data)->nsubPerRank;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWSetRepartition_GDSW(PC pc, PetscBool flg)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  if (flg != gd->repartition) pc->setupcalled = 0;
+  gd->repartition = flg;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWGetRepartition_GDSW(PC pc, PetscBool *flg)
+{
+  PetscFunctionBegin;
+  *flg = ((PC_GDSW *)pc->data)->repartition;
   PetscFunctionReturn(0);
 }
 
@@ -710,6 +731,8 @@ static PetscErrorCode ComposeMethods(PC pc, PetscBool add)
   GDSW_COMPOSE(PCGDSWGetSubdomains);
   GDSW_COMPOSE(PCGDSWSetSubdomainsPerRank);
   GDSW_COMPOSE(PCGDSWGetSubdomainsPerRank);
+  GDSW_COMPOSE(PCGDSWSetRepartition);
+  GDSW_COMPOSE(PCGDSWGetRepartition);
   GDSW_COMPOSE(PCGDSWSetSubdomainSize);
   GDSW_COMPOSE(PCGDSWGetSubdomainSize);
   GDSW_COMPOSE(PCGDSWSetOverlap);
@@ -766,6 +789,7 @@ static PetscErrorCode PCDestroy_GDSW(PC pc)
 
    Options Database Keys:
 +  -pc_gdsw_subdomains <-1> - subdomains per MPI rank, METIS on the rank's node graph; -1 (`PETSC_DECIDE`): about -pc_gdsw_subdomain_size dofs each (see `PCGDSWSetSubdomainsPerRank()`)
+.  -pc_gdsw_repartition <false> - the subdomains from a parallel partitioner of the whole matrix graph, not from each rank's rows (see `PCGDSWSetRepartition()`)
 .  -pc_gdsw_subdomain_size <12000> - the target number of dofs per subdomain of that rule; 3000 with incomplete or adaptive local solvers (see `PCGDSWSetSubdomainSize()`)
 .  -pc_gdsw_overlap <1> - layers of the matrix graph added to each subdomain (see `PCGDSWSetOverlap()`)
 .  -pc_gdsw_coarse_space <gdsw> - gdsw, rgdsw or none (see `PCGDSWSetCoarseSpaceType()`)
@@ -814,6 +838,7 @@ PETSC_EXTERN PetscErrorCode PCCreate_GDSW(PC pc)
   PetscCall(PetscNew(&gd));
   pc->data             = gd;
   gd->nsubPerRank      = PETSC_DECIDE;
+  gd->repartition      = PETSC_FALSE;
   gd->subdomainSize    = PETSC_DECIDE;
   gd->localSolver      = PC_GDSW_LOCAL_EXACT;
   gd->conditionMax     = 25;
@@ -950,6 +975,64 @@ PetscErrorCode PCGDSWGetSubdomainsPerRank(PC pc, PetscInt *n)
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
   PetscValidIntPointer(n, 2);
   PetscUseMethod(pc, "PCGDSWGetSubdomainsPerRank_C", (PC, PetscInt *), (pc, n));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWSetRepartition - Sets whether `PCGDSW` makes its algebraic subdomains from a parallel partition of the whole matrix graph rather than from each rank's rows
+
+   Logically Collective on pc
+
+   Input Parameters:
++  pc - the preconditioner context
+-  flg - `PETSC_TRUE` to repartition, `PETSC_FALSE` (the default) to split each rank's rows with METIS
+
+   Options Database Keys:
++  -pc_gdsw_repartition <true,false> - sets the flag
+-  -pc_gdsw_mat_partitioning_type <type> - the partitioner (`MatPartitioningType`; PETSc's default: ParMETIS, else PTScotch where installed)
+
+   Notes:
+   By default each subdomain lies within one rank's rows, so the subdomains are no better shaped than the application's distribution of the mesh.
+   Where that distribution is not compact (a plate whose ranks each hold some layers of its thickness, as a simple partition of a box's
+   cells in their order gives), the subdomains are thin and the iterations grow. With this flag the node graph of the whole operator is
+   split into as many subdomains as the size rule or `PCGDSWSetSubdomainsPerRank()` asks for (times the number of ranks), subdomain i
+   goes to rank floor(i size / N), and the rows stay where they are. The parts of a parallel partitioner need not be connected.
+   Not used with `PCGDSWSetSubdomains()` or a `MATIS` operator. A new value makes the next `PCSetUp()` rebuild the preconditioner.
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWGetRepartition()`, `PCGDSWSetSubdomainsPerRank()`, `PCGDSWSetSubdomainSize()`, `MatPartitioningCreate()`
+@*/
+PetscErrorCode PCGDSWSetRepartition(PC pc, PetscBool flg)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidLogicalCollectiveBool(pc, flg, 2);
+  PetscTryMethod(pc, "PCGDSWSetRepartition_C", (PC, PetscBool), (pc, flg));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetRepartition - Gets whether `PCGDSW` makes its algebraic subdomains from a parallel partition of the whole matrix graph
+
+   Not Collective
+
+   Input Parameter:
+.  pc - the preconditioner context
+
+   Output Parameter:
+.  flg - the flag
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWSetRepartition()`
+@*/
+PetscErrorCode PCGDSWGetRepartition(PC pc, PetscBool *flg)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidBoolPointer(flg, 2);
+  PetscUseMethod(pc, "PCGDSWGetRepartition_C", (PC, PetscBool *), (pc, flg));
   PetscFunctionReturn(0);
 }
 

@@ -71,6 +71,7 @@ struct Subdomain {
 typedef struct {
   /* options */
   PetscInt              nsubPerRank;      /* -pc_gdsw_subdomains, or PETSC_DECIDE: the size rule */
+  PetscBool             repartition;      /* -pc_gdsw_repartition: algebraic subdomains from a parallel partition of the whole graph */
   PetscInt              subdomainSize;    /* -pc_gdsw_subdomain_size: target dofs per subdomain of the rule, or PETSC_DECIDE: by the local solver */
   PCGDSWLocalSolverType localSolver;      /* -pc_gdsw_local_solver */
   PetscReal             conditionMax;     /* -pc_gdsw_local_condition_max: the adaptive first level's bound */
@@ -99,6 +100,7 @@ typedef struct {
   IS       *nonArr, *ovlArr;              /* the subdomains' index sets as arrays, for PCGDSWGetSubdomains() */
   PetscInt  nsubRank0;                    /* subdomains on rank 0, for the view */
   PetscBool balanced;                     /* algebraic subdomains moved between ranks whose rows are unbalanced */
+  char      partitioner[64];              /* the MatPartitioning type that repartitioned the graph */
   PetscSF   nodeSF;                       /* leaves: nodes of every local Omega~_i; roots: owned nodes */
   PetscInt  nDirichletRows;               /* global count */
   PetscInt  counts[3];                    /* faces, edges, vertices (global) */
