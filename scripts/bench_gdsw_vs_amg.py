@@ -63,7 +63,9 @@ AMG = ["GAMG", "ML", "BoomerAMG", "BoomerAMG nodal"]
 # PETSc's GDSW converts an AIJ operator to MATIS with one subdomain per rank: 266 s on the cube
 NO_PETSC_GDSW = [m for m in METHODS if m != "PETSc GDSW (PCMG)"]
 METHODS["gdsw repartitioned"] = f"{GDSW} -pc_gdsw_repartition"
-PLATE_METHODS = ["gdsw (defaults)", "gdsw RGDSW", "gdsw adaptive", "GAMG", "ML", "BoomerAMG", "BoomerAMG nodal", "PETSc GDSW (PCMG)"]
+# BoomerAMG is left out: on the thickest plate it needs 179 iterations and 52 s (ML 0.5 s), and its
+# nodal variant stops with a segmentation fault (block size 1: DMPlex removes the clamped dofs)
+PLATE_METHODS = ["gdsw (defaults)", "gdsw RGDSW", "gdsw adaptive", "GAMG", "ML", "PETSc GDSW (PCMG)"]
 
 
 def plate(thickness, faces, partitioner):
