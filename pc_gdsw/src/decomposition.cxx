@@ -274,7 +274,7 @@ static PetscErrorCode PartOfOwnedNodes(PC pc, const LocalGraph &g, PetscInt n0, 
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(MatGetSize(gd->A, &ndofs, nullptr));
   nnodes                 = ndofs / gd->bs;
-  const PetscInt request = gd->nsubPerRank != PETSC_DECIDE ? gd->nsubPerRank * size : std::max<PetscInt>(1, (PetscInt)std::lround((double)ndofs / GDSWSubdomainSizeTarget(gd)));
+  const PetscInt request = std::min(nnodes, gd->nsubPerRank != PETSC_DECIDE ? gd->nsubPerRank * size : std::max<PetscInt>(1, (PetscInt)std::lround((double)ndofs / GDSWSubdomainSizeTarget(gd))));
   /* the node graph in global ids, each row the sorted union of its owned and ghost neighbours */
   PetscInt *ia, *ja;
   PetscCall(PetscMalloc1(nn + 1, &ia));
