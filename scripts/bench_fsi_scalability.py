@@ -1,0 +1,90 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""The paper's Figs. 3 and 4 in kind: the coupled tubes with the linear wall
+(scenes/fsi_tube{1,2,3}_linear.opts), FaCSI with GDSW on the structure (scenes/fsi_facsi.opts),
+GMRES iterations per Newton step and Newton steps per time step against the number of
+structure subdomains, overlap 1 and 2. One run per point, `mpiexec -n RANKS` with
+SUBDOMAINS / RANKS subdomains per rank, a few time steps each; one CSV row per run, the
+seconds per step and its parts included (meaningful where every rank has its own core).
+Usage: scripts/bench_fsi_scalability.py [--tubes 1,2,3] [--mesh L0] [--dt 1e-4,2e-4]
+         [--subdomains 16,32,64,128,256] [--overlap 1,2] [--ranks 2] [--steps 2] [--out fsi_scalability] [--plot]
+--mesh names the level of meshes/tube<N>_<mesh>.msh: L0 (committed), L1, ... or seed_fsi (the
+paper's size; both made by scripts/make-meshes when missing). On a cluster, e.g.:
+  scripts/bench_fsi_scalability.py --mesh seed_fsi --ranks 64 --subdomains 64,128,256,512
+Writes bench/results/<out>.{csv,cmd,png}; --plot redraws the PNG from the CSV."""
+import csv
+import os
+import sys
+import tempfile
+
+from benchlib import TOP, loadavg, run, run_report, step_costs, write_results
+
+APP = os.path.join(os.environ.get("GDSW_BUILD", os.path.join(TOP, "build")), "fsi_app", "fsi_app")
+
+
+def arg(name, default):
+    return sys.argv[sys.argv.index(name) + 1] if name in sys.argv else default
+
+
+def main():
+    tubes = [int(t) for t in arg("--tubes", "1,2,3").split(",")]
+    level, ranks, steps = arg("--mesh", "L0"), int(arg("--ranks", "2")), int(arg("--steps", "2"))
+    dts = arg("--dt", "1e-4,2e-4").split(",")
+    counts = [int(s) for s in arg("--subdomains", "16,32,64,128,256").split(",")]
+    overlaps = arg("--overlap", "1,2").split(",")
+    out = os.path.join(TOP, "bench", "results", arg("--out", "fsi_scalability"))
+    if "--plot" in sys.argv:
+        plot(out)
+        return
+    bad = [s for s in counts if s % ranks]
+    if bad:
+        sys.exit(f"bench_fsi_scalability: --subdomains {bad} are not multiples of --ranks {ranks}")
+    rows, cmds, load = [], [], loadavg()
+    for tube in tubes:
+        mesh = os.path.join(TOP, "meshes", f"tube{tube}_{level}.msh")
+        if not os.path.exists(mesh):
+            print(run(f"{os.path.join(TOP, 'scripts', 'make-meshes')} tube{tube} {level.removeprefix('L')}"))
+        for dt in dts:
+            for overlap in overlaps:
+                for s in counts:
+                    report = os.path.join(tempfile.mkdtemp(), "r.json")
+                    cmd = (f"mpiexec -n {ranks} --mca mpi_yield_when_idle 1 {APP} -options_file scenes/fsi_tube{tube}_linear.opts "
+                           f"-options_file scenes/fsi_facsi.opts -mesh {mesh} -dt {dt} -t_final {steps * float(dt):g} "
+                           f"-structure_subdomains {s // ranks} -fieldsplit_structure_pc_gdsw_overlap {overlap} -report {report}")
+                    r = run_report(cmd, report, timeout=7200)
+                    row = {"tube": tube, "mesh": f"tube{tube}_{level}", "dt": dt, "ranks": ranks, "subdomains": s, "overlap": overlap,
+                           **(step_costs(r) if r else {"converged": 0})}
+                    print(row, flush=True)
+                    rows.append(row)
+                    cmds.append(cmd)
+    write_results(out, rows, cmds, "scripts/bench_fsi_scalability.py " + " ".join(sys.argv[1:]), load)
+    plot(out)
+
+
+def plot(out):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = [r for r in csv.DictReader(open(out + ".csv")) if r["converged"] == "1"]
+    meshes = list(dict.fromkeys(r["mesh"] for r in rows))
+    fig, axes = plt.subplots(1, len(meshes), figsize=(5 * len(meshes), 4), squeeze=False)
+    for ax, mesh in zip(axes[0], meshes):
+        for dt in dict.fromkeys(r["dt"] for r in rows if r["mesh"] == mesh):
+            for overlap in ("1", "2"):
+                sel = [r for r in rows if r["mesh"] == mesh and r["dt"] == dt and r["overlap"] == overlap]
+                if sel:
+                    ax.plot([int(r["subdomains"]) for r in sel], [float(r["gmres_per_newton"]) for r in sel], "o-" if overlap == "2" else "s--",
+                            label=f"dt = {float(dt) * 1e3:g} ms, overlap {overlap}")
+        ax.set_xscale("log", base=2)
+        ax.set_xlabel(f"structure subdomains ({rows[0]['ranks']} ranks)")
+        ax.set_ylabel("GMRES iterations per Newton step")
+        ax.set_title(f"FaCSI + GDSW, {mesh}, linear wall", fontsize=9)
+        ax.set_ylim(bottom=0)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(out + ".png", dpi=110)
+
+
+if __name__ == "__main__":
+    main()
