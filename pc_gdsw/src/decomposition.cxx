@@ -246,6 +246,22 @@ static PetscErrorCode DropEmptyParts(PC pc, std::vector<PetscInt> &part, PetscIn
   PetscFunctionReturn(0);
 }
 
+/* out[r] to rank r, for every r; in: what every rank sent here, in rank order. */
+static PetscErrorCode SendToRanks(MPI_Comm comm, const std::vector<std::vector<PetscInt>> &out, std::vector<PetscInt> &in)
+{
+  const PetscMPIInt size = (PetscMPIInt)out.size();
+  std::vector<PetscMPIInt> scount(size), rcount(size), sdispl(size + 1, 0), rdispl(size + 1, 0);
+  std::vector<PetscInt>    sbuf;
+
+  PetscFunctionBegin;
+  for (PetscMPIInt r = 0; r < size; r++) scount[r] = (PetscMPIInt)out[r].size();
+  PetscCallMPI(MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, comm));
+  for (PetscMPIInt r = 0; r < size; r++) sdispl[r + 1] = sdispl[r] + scount[r], rdispl[r + 1] = rdispl[r] + rcount[r], sbuf.insert(sbuf.end(), out[r].begin(), out[r].end());
+  in.resize(rdispl[size]);
+  PetscCallMPI(MPI_Alltoallv(sbuf.data(), scount.data(), sdispl.data(), MPIU_INT, in.data(), rcount.data(), rdispl.data(), MPIU_INT, comm));
+  PetscFunctionReturn(0);
+}
+
 /* Global subdomain id of every owned node, and the number of subdomains: METIS parts of the
    rank's node graph, numbered rank after rank; or, with -pc_gdsw_repartition, the parts of a
    parallel partitioner (MatPartitioning, prefix -pc_gdsw_) of the whole node graph, for ranks
@@ -392,15 +408,8 @@ static PetscErrorCode AlgebraicSubdomains(PC pc, std::vector<std::vector<PetscIn
   PetscCall(ISDestroy(&ghostIS));
   PetscCall(VecDestroy(&sid));
   std::vector<PetscInt> rec;
-  if (gd->repartition) {
-    std::vector<PetscMPIInt> scount(size), rcount(size), sdispl(size + 1, 0), rdispl(size + 1, 0);
-    for (PetscMPIInt r = 0; r < size; r++) scount[r] = (PetscMPIInt)out[r].size();
-    PetscCallMPI(MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, comm));
-    std::vector<PetscInt> sbuf;
-    for (PetscMPIInt r = 0; r < size; r++) sdispl[r + 1] = sdispl[r] + scount[r], rdispl[r + 1] = rdispl[r] + rcount[r], sbuf.insert(sbuf.end(), out[r].begin(), out[r].end());
-    rec.resize(rdispl[size]);
-    PetscCallMPI(MPI_Alltoallv(sbuf.data(), scount.data(), sdispl.data(), MPIU_INT, rec.data(), rcount.data(), rdispl.data(), MPIU_INT, comm));
-  } else rec.swap(out[rank]);
+  if (gd->repartition) PetscCall(SendToRanks(comm, out, rec));
+  else rec.swap(out[rank]);
 
   std::vector<PetscInt> ids;
   for (size_t k = 0; k < rec.size(); k += 3) ids.push_back(rec[k]);
@@ -474,13 +483,8 @@ static PetscErrorCode BalanceSubdomains(PC pc, std::vector<std::vector<PetscInt>
     o.push_back((PetscInt)parts[i].size());
     o.insert(o.end(), parts[i].begin(), parts[i].end());
   }
-  std::vector<PetscMPIInt> scount(size), rcount(size), sdispl(size + 1, 0), rdispl(size + 1, 0);
-  for (PetscMPIInt r = 0; r < size; r++) scount[r] = (PetscMPIInt)out[r].size();
-  PetscCallMPI(MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, comm));
-  std::vector<PetscInt> sbuf;
-  for (PetscMPIInt r = 0; r < size; r++) sdispl[r + 1] = sdispl[r] + scount[r], rdispl[r + 1] = rdispl[r] + rcount[r], sbuf.insert(sbuf.end(), out[r].begin(), out[r].end());
-  std::vector<PetscInt> rbuf(rdispl[size]);
-  PetscCallMPI(MPI_Alltoallv(sbuf.data(), scount.data(), sdispl.data(), MPIU_INT, rbuf.data(), rcount.data(), rdispl.data(), MPIU_INT, comm));
+  std::vector<PetscInt> rbuf;
+  PetscCall(SendToRanks(comm, out, rbuf));
   /* sources in rank order and each in its order: the ids stay ascending */
   sub.clear(), parts.clear();
   for (size_t k = 0; k < rbuf.size();) {
