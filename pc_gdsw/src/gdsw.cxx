@@ -803,7 +803,8 @@ static PetscErrorCode PCDestroy_GDSW(PC pc)
 
    Notes:
    The subdomains are, in this order of preference, the application's (`PCGDSWSetSubdomains()`),
-   a `MATIS` operator's local-to-global map (one per rank), or METIS parts of each rank's node graph.
+   a `MATIS` operator's local subdomains (each split by METIS when the size rule or `PCGDSWSetSubdomainsPerRank()` asks for more
+   than one per rank), or METIS parts of each rank's node graph (or of the whole graph, `PCGDSWSetRepartition()`).
 
    The null space comes from the operator's near-null space (`MatSetNearNullSpace()`), else from
    the coordinates given with `PCSetCoordinates()` (rigid-body modes in 2D and 3D), else it is
@@ -938,7 +939,8 @@ PetscErrorCode PCGDSWGetSubdomains(PC pc, PetscInt *n, IS *nonoverlap[], IS *ove
 .  -pc_gdsw_subdomains <n> - sets the number
 
    Notes:
-   Not used when the application gives its subdomains with `PCGDSWSetSubdomains()`. A `MATIS` operator has one subdomain per rank; other values are an error there.
+   Not used when the application gives its subdomains with `PCGDSWSetSubdomains()`. For a `MATIS` operator each rank's local subdomain is split into n by METIS
+   on its local matrix's node graph. With `PCGDSWSetRepartition()` the whole graph is split into n times the number of ranks.
    A new value makes the next `PCSetUp()` rebuild the preconditioner.
 
    Level: intermediate
