@@ -290,7 +290,8 @@ static PetscErrorCode PartOfOwnedNodes(PC pc, const LocalGraph &g, PetscInt n0, 
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(MatGetSize(gd->A, &ndofs, nullptr));
   nnodes                 = ndofs / gd->bs;
-  const PetscInt request = std::min(nnodes, gd->nsubPerRank != PETSC_DECIDE ? gd->nsubPerRank * size : std::max<PetscInt>(1, (PetscInt)std::lround((double)ndofs / GDSWSubdomainSizeTarget(gd))));
+  /* the size rule on all rows, or the count per rank times the ranks */
+  const PetscInt request = std::min(nnodes, RequestedParts(gd, ndofs) * (gd->nsubPerRank != PETSC_DECIDE ? size : 1));
   /* the node graph in global ids, each row the sorted union of its owned and ghost neighbours */
   PetscInt *ia, *ja;
   PetscCall(PetscMalloc1(nn + 1, &ia));
@@ -411,8 +412,9 @@ static PetscErrorCode AlgebraicSubdomains(PC pc, std::vector<std::vector<PetscIn
   if (gd->repartition) PetscCall(SendToRanks(comm, out, rec));
   else rec.swap(out[rank]);
 
-  std::vector<PetscInt> ids;
-  for (size_t k = 0; k < rec.size(); k += 3) ids.push_back(rec[k]);
+  std::vector<PetscInt> ids; /* every subdomain has nodes in P_i */
+  for (size_t k = 0; k < rec.size(); k += 3)
+    if (rec[k + 2]) ids.push_back(rec[k]);
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   const PetscInt nloc = (PetscInt)ids.size();
