@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSD-2-Clause
 static const char help[] = "Feeds PCGDSW one kind of bad input (-case <name>) so that tests can check its error message.\n"
-                           "Cases: nonsquare, unassembled, coordinates, nullspace_length, singular, zero_row_2d, floating, partial_node, uncovered, empty_subdomain.\n";
+                           "Cases: nonsquare, unassembled, coordinates, nullspace_length, singular, zero_row_2d, floating, partial_node, uncovered, index_negative, index_large,\n"
+                           "coordinates_nan, coordinates_2d, nullspace_nan, empty_subdomain.\n";
 
 /* A block-diagonal operator kron(L, I_bs), L the 1D Laplacian with n nodes (Dirichlet rows at
    both ends unless -case floating), is enough to reach each check. */
 #include <petscgdsw.h>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -99,6 +101,33 @@ int main(int argc, char **argv)
     PetscCall(MatSetNearNullSpace(A, nsp));
     PetscCall(PCSetOperators(pc, A, A));
     PetscCall(PCSetUp(pc));
+  } else if (c == "coordinates_nan" || c == "coordinates_2d") { /* a NaN coordinate; 2-D coordinates on 3 dofs per node */
+    PetscInt m;
+    PetscCall(Laplacian(n, 3, PETSC_TRUE, &A));
+    PetscCall(MatGetLocalSize(A, &m, nullptr));
+    const PetscInt dim = c == "coordinates_2d" ? 2 : 3;
+    std::vector<PetscReal> xyz(dim * (m / 3), 0.0);
+    if (c == "coordinates_nan") xyz[1] = std::numeric_limits<PetscReal>::quiet_NaN();
+    PetscCall(PCSetOperators(pc, A, A));
+    PetscCall(PCSetCoordinates(pc, dim, m / 3, xyz.data()));
+    PetscCall(PCSetUp(pc));
+  } else if (c == "nullspace_nan") {
+    Vec          v;
+    MatNullSpace nsp;
+    PetscInt     rstart;
+    PetscCall(Laplacian(n, 1, PETSC_TRUE, &A));
+    PetscCall(MatCreateVecs(A, &v, nullptr));
+    PetscCall(VecSet(v, 1.0 / PetscSqrtReal((PetscReal)n)));
+    PetscCall(VecGetOwnershipRange(v, &rstart, nullptr));
+    PetscCall(VecSetValue(v, rstart, std::numeric_limits<PetscReal>::quiet_NaN(), INSERT_VALUES));
+    PetscCall(VecAssemblyBegin(v));
+    PetscCall(VecAssemblyEnd(v));
+    PetscCall(MatNullSpaceCreate(PETSC_COMM_WORLD, PETSC_FALSE, 1, &v, &nsp));
+    PetscCall(MatSetNearNullSpace(A, nsp));
+    PetscCall(MatNullSpaceDestroy(&nsp));
+    PetscCall(VecDestroy(&v));
+    PetscCall(PCSetOperators(pc, A, A));
+    PetscCall(PCSetUp(pc));
   } else if (c == "singular") { /* one dof with an all-zero row and column */
     PetscInt mid = n / 2;
     PetscCall(Laplacian(n, 1, PETSC_TRUE, &A));
@@ -121,7 +150,7 @@ int main(int argc, char **argv)
     PetscCall(Laplacian(n, 1, PETSC_FALSE, &A));
     PetscCall(PCSetOperators(pc, A, A));
     PetscCall(PCSetUp(pc));
-  } else if (c == "partial_node" || c == "uncovered" || c == "empty_subdomain") {
+  } else if (c == "partial_node" || c == "uncovered" || c == "empty_subdomain" || c == "index_negative" || c == "index_large") {
     PetscInt rstart, rend;
     PetscCall(Laplacian(n, 3, PETSC_TRUE, &A));
     PetscCall(MatGetOwnershipRange(A, &rstart, &rend));
@@ -131,6 +160,8 @@ int main(int argc, char **argv)
     if (c == "uncovered") all.resize(all.size() - 3);            /* drops the last node */
     if (rend < n * 3) /* the closure of this rank's cells reaches the next rank's first node */
       for (PetscInt d = 0; d < 3; d++) all.push_back(rend + d);
+    if (c == "index_negative") all.push_back(-1);
+    if (c == "index_large") all.push_back(3 * n);
     IS is[2];
     PetscCall(ISCreateGeneral(PETSC_COMM_SELF, (PetscInt)all.size(), all.data(), PETSC_COPY_VALUES, &is[0]));
     PetscCall(ISCreateGeneral(PETSC_COMM_SELF, 0, nullptr, PETSC_COPY_VALUES, &is[1]));

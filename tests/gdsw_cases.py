@@ -546,6 +546,11 @@ BAD = {
     "singular": "could not be factored (FACTOR_NUMERIC_ZEROPIVOT)",
     "partial_node": "it must contain every dof of each node it touches",
     "uncovered": "lies in no subdomain",
+    "index_negative": "the nonoverlapping index set of subdomain 0 on rank 0 holds the index -1",
+    "index_large": "holds the index 120 at position",
+    "coordinates_nan": "PCSetCoordinates() coordinate 1 of local node 0 is not finite",
+    "coordinates_2d": "PCSetCoordinates() gave 2-D coordinates but the operator has 3 dofs per node",
+    "nullspace_nan": "near-null space vector 0 is not finite (NaN or Inf) in its local row 0",
 }
 
 

@@ -569,6 +569,30 @@ static PetscErrorCode MatISSubdomains(PC pc, std::vector<IS> &non, std::vector<s
 }
 
 /* Element-based subdomains from the caller or a MATIS operator. */
+/* The application's index sets must name rows of the operator: a wrong one would otherwise end
+   in PETSc's generic hash error or, negative, in a crash. */
+static PetscErrorCode CheckGivenIndices(PC pc, PetscInt n, IS sets[], const char *kind)
+{
+  PetscInt    N;
+  PetscMPIInt rank;
+
+  PetscFunctionBegin;
+  PetscCall(MatGetSize(pc->pmat, &N, nullptr));
+  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)pc), &rank));
+  for (PetscInt i = 0; i < n; i++) {
+    PetscInt        m;
+    const PetscInt *idx;
+    PetscCall(ISGetLocalSize(sets[i], &m));
+    PetscCall(ISGetIndices(sets[i], &idx));
+    for (PetscInt k = 0; k < m; k++)
+      PetscCheck(idx[k] >= 0 && idx[k] < N, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+                 "PCGDSWSetSubdomains(): the %s index set of subdomain %" PetscInt_FMT " on rank %d holds the index %" PetscInt_FMT " at position %" PetscInt_FMT "; the operator's global rows are 0 .. %" PetscInt_FMT,
+                 kind, i, rank, idx[k], k, N - 1);
+    PetscCall(ISRestoreIndices(sets[i], &idx));
+  }
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode GivenSubdomains(PC pc, PetscInt n, IS non[], std::vector<PetscInt> &origin)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
@@ -607,6 +631,8 @@ PetscErrorCode GDSWBuildDecomposition(PC pc)
   const PetscBool haveUser = (PetscBool)(gd->nUser >= 0);
   gd->balanced             = PETSC_FALSE;
   if (haveUser) {
+    PetscCall(CheckGivenIndices(pc, gd->nUser, gd->userNon, "nonoverlapping"));
+    if (gd->userOvl) PetscCall(CheckGivenIndices(pc, gd->nUser, gd->userOvl, "overlapping"));
     PetscCall(GivenSubdomains(pc, gd->nUser, gd->userNon, origin));
   } else if (isIS) {
     std::vector<IS> non;

@@ -417,6 +417,8 @@ static PetscErrorCode PCSetCoordinates_GDSW(PC pc, PetscInt dim, PetscInt n, Pet
 
   PetscFunctionBegin;
   PetscCheck(dim >= 1 && dim <= 3, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: PCSetCoordinates() dimension %" PetscInt_FMT " must be 1, 2 or 3", dim);
+  for (PetscInt k = 0; k < dim * n; k++)
+    PetscCheck(!PetscIsInfOrNanReal(coords[k]), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: PCSetCoordinates() coordinate %" PetscInt_FMT " of local node %" PetscInt_FMT " is not finite (NaN or Inf): the rigid-body modes need finite coordinates", k % dim, k / dim);
   PetscCall(PetscFree(gd->coords));
   PetscCall(PetscMalloc1(dim * n, &gd->coords));
   PetscCall(PetscArraycpy(gd->coords, coords, dim * n));

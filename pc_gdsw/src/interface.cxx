@@ -71,10 +71,16 @@ static PetscErrorCode NodeDataOwned(PC pc, std::vector<PetscReal> &data)
       PetscCheck(n == rend - rstart, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "PCGDSW: near-null space vector %" PetscInt_FMT " has local length %" PetscInt_FMT " but the operator has %" PetscInt_FMT " local rows", k, n, rend - rstart);
       PetscCall(VecGetArrayRead(v[k], &x));
       for (PetscInt a = 0; a < nn; a++)
-        for (PetscInt c = 0; c < bs; c++) data[a * gd->dataWidth + k * bs + c] = PetscRealPart(x[a * bs + c]);
+        for (PetscInt c = 0; c < bs; c++) {
+          const PetscReal xv = PetscRealPart(x[a * bs + c]);
+          PetscCheck(!PetscIsInfOrNanReal(xv), PETSC_COMM_SELF, PETSC_ERR_FP, "PCGDSW: near-null space vector %" PetscInt_FMT " is not finite (NaN or Inf) in its local row %" PetscInt_FMT " (global row %" PetscInt_FMT "): the coarse space needs finite vectors", k, a * bs + c, rstart + a * bs + c);
+          data[a * gd->dataWidth + k * bs + c] = xv;
+        }
       PetscCall(VecRestoreArrayRead(v[k], &x));
     }
     PetscCall(PetscInfo(pc, "null space: the operator's near-null space, %" PetscInt_FMT " vectors\n", gd->nz));
+  } else if (gd->coords && gd->coordDim != bs && (bs == 2 || bs == 3)) {
+    SETERRQ(PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_INCOMP, "PCGDSW: PCSetCoordinates() gave %" PetscInt_FMT "-D coordinates but the operator has %" PetscInt_FMT " dofs per node: the rigid-body modes need %" PetscInt_FMT "-D coordinates (or attach a near-null space with MatSetNearNullSpace(), or -pc_gdsw_rotations 0 for translations only)", gd->coordDim, bs, bs);
   } else if (gd->coords && gd->coordDim == bs && (bs == 2 || bs == 3)) {
     PetscCheck(gd->nCoordNodes == nn, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "PCGDSW: PCSetCoordinates() gave %" PetscInt_FMT " local nodes but the operator has %" PetscInt_FMT " local nodes of %" PetscInt_FMT " dofs", gd->nCoordNodes, nn, bs);
     gd->haveCoords = PETSC_TRUE;
