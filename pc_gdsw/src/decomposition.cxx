@@ -568,7 +568,6 @@ static PetscErrorCode MatISSubdomains(PC pc, std::vector<IS> &non, std::vector<s
   PetscFunctionReturn(0);
 }
 
-/* Element-based subdomains from the caller or a MATIS operator. */
 /* The application's index sets must name rows of the operator: a wrong one would otherwise end
    in PETSc's generic hash error or, negative, in a crash. */
 static PetscErrorCode CheckGivenIndices(PC pc, PetscInt n, IS sets[], const char *kind)
@@ -593,6 +592,7 @@ static PetscErrorCode CheckGivenIndices(PC pc, PetscInt n, IS sets[], const char
   PetscFunctionReturn(0);
 }
 
+/* Element-based subdomains from the caller or a MATIS operator. */
 static PetscErrorCode GivenSubdomains(PC pc, PetscInt n, IS non[], std::vector<PetscInt> &origin)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;

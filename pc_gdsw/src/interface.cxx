@@ -81,7 +81,7 @@ static PetscErrorCode NodeDataOwned(PC pc, std::vector<PetscReal> &data)
     PetscCall(PetscInfo(pc, "null space: the operator's near-null space, %" PetscInt_FMT " vectors\n", gd->nz));
   } else if (gd->coords && gd->coordDim != bs && (bs == 2 || bs == 3)) {
     SETERRQ(PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_INCOMP, "PCGDSW: PCSetCoordinates() gave %" PetscInt_FMT "-D coordinates but the operator has %" PetscInt_FMT " dofs per node: the rigid-body modes need %" PetscInt_FMT "-D coordinates (or attach a near-null space with MatSetNearNullSpace(), or -pc_gdsw_rotations 0 for translations only)", gd->coordDim, bs, bs);
-  } else if (gd->coords && gd->coordDim == bs && (bs == 2 || bs == 3)) {
+  } else if (gd->coords && (bs == 2 || bs == 3)) {
     PetscCheck(gd->nCoordNodes == nn, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "PCGDSW: PCSetCoordinates() gave %" PetscInt_FMT " local nodes but the operator has %" PetscInt_FMT " local nodes of %" PetscInt_FMT " dofs", gd->nCoordNodes, nn, bs);
     gd->haveCoords = PETSC_TRUE;
     gd->nz = bs == 3 ? 6 : 3, gd->dataWidth = bs;
