@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
 """gdsw against what a PETSc user would otherwise type on ordinary elasticity: GAMG, ML,
-BoomerAMG and PETSc's own GDSW, with gdsw's defaults and each of its levers.
+BoomerAMG and PETSc's own GDSW, with gdsw's defaults (balanced combination), the additive combination
+and each of its levers.
   ex56   PETSc's ksp/tutorials/ex56 -ne 31 -use_mat_nearnullspace (98,304 dofs, a soft inclusion),
          1 rank; and 2 ranks, where ex56 puts every row on rank 0
   ex71   PETSc's ksp/tutorials/ex71 -pde_type Elasticity -dim 3 -cells 31,31,31 (MATIS; the AMGs
@@ -46,6 +47,7 @@ PETSC_GDSW = ("-pc_type mg -pc_mg_levels 2 -pc_mg_galerkin -pc_mg_adapt_interp_c
 # gdsw's defaults first, then its levers alone and together
 METHODS = {
     "gdsw (defaults)": GDSW,
+    "gdsw additive": f"{GDSW} -pc_gdsw_combination additive",
     "gdsw RGDSW": f"{GDSW} -pc_gdsw_coarse_space rgdsw",
     "gdsw exact, 3000-dof subdomains": f"{GDSW} -pc_gdsw_subdomain_size 3000",
     "gdsw incomplete": f"{GDSW} -pc_gdsw_local_solver incomplete",
@@ -65,7 +67,7 @@ NO_PETSC_GDSW = [m for m in METHODS if m != "PETSc GDSW (PCMG)"]
 METHODS["gdsw repartitioned"] = f"{GDSW} -pc_gdsw_repartition"
 # BoomerAMG is left out: on the thickest plate it needs 179 iterations and 52 s (ML 0.5 s), and its
 # nodal variant stops with a segmentation fault (block size 1: DMPlex removes the clamped dofs)
-PLATE_METHODS = ["gdsw (defaults)", "gdsw RGDSW", "gdsw adaptive", "GAMG", "ML", "PETSc GDSW (PCMG)"]
+PLATE_METHODS = ["gdsw (defaults)", "gdsw additive", "gdsw RGDSW", "gdsw adaptive", "GAMG", "ML", "PETSc GDSW (PCMG)"]
 
 
 def plate(thickness, faces, partitioner):

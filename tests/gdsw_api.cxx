@@ -2,9 +2,10 @@
 static const char help[] = "Exercises PCGDSW's API on a nonsymmetric problem: upwind convection-diffusion\n"
                            "-Laplace(u) + beta (1, 1/2) . grad(u) = 1 on the unit square, zero on its boundary, n x n interior nodes.\n"
                            "  -case transpose  <P^T x, y> = <x, P y> for random x, y; GMRES with KSPSolve and KSPSolveTranspose\n"
+                           "  -case coarse_exact  |P A Phi c - Phi c| / |Phi c| and |P^T A^T Phi c - Phi c| / |Phi c| for random c\n"
                            "  -case setters    a solve, then the setter named by -set changes its parameter, and a second solve\n"
                            "  -set <overlap>   subdomains (4 per rank), repartition (true), subdomain_size (200), overlap (2),\n"
-                           "                   coarse_space (none), combination (multiplicative), first_level_type (restricted)\n"
+                           "                   coarse_space (none), combination (additive), first_level_type (restricted)\n"
                            "                   or local_solver (incomplete)\n"
                            "  -n <32> -beta <20>  grid and wind speed\n"
                            "  -rounds <1>      run the case this many times, each between its own PetscInitialize() and PetscFinalize()\n"
@@ -151,6 +152,48 @@ static PetscErrorCode CheckAdjoint(PC pc, Mat A)
   PetscFunctionReturn(0);
 }
 
+/* The balanced combination solves the coarse space exactly: P A Phi = Phi and P^T A^T Phi = Phi,
+   what neither the additive nor the multiplicative one does. Worst of three random c. */
+static PetscErrorCode CheckCoarseExact(PC pc, Mat A)
+{
+  Mat         Phi;
+  Vec         c, v, Av, w;
+  PetscRandom rnd;
+  PetscReal   worst[2] = {0, 0};
+
+  PetscFunctionBegin;
+  PetscCall(PCGDSWGetCoarseBasis(pc, &Phi));
+  PetscCall(MatCreateVecs(Phi, &c, &v));
+  PetscCall(VecDuplicate(v, &Av));
+  PetscCall(VecDuplicate(v, &w));
+  PetscCall(PetscRandomCreate(PETSC_COMM_WORLD, &rnd));
+  PetscCall(PetscRandomSetInterval(rnd, -1.0, 1.0));
+  for (int k = 0; k < 3; k++)
+    for (int t = 0; t < 2; t++) {
+      PetscReal nv, nd;
+      PetscCall(VecSetRandom(c, rnd));
+      PetscCall(MatMult(Phi, c, v));
+      if (t) {
+        PetscCall(MatMultTranspose(A, v, Av));
+        PetscCall(PCApplyTranspose(pc, Av, w));
+      } else {
+        PetscCall(MatMult(A, v, Av));
+        PetscCall(PCApply(pc, Av, w));
+      }
+      PetscCall(VecNorm(v, NORM_2, &nv));
+      PetscCall(VecAXPY(w, -1.0, v));
+      PetscCall(VecNorm(w, NORM_2, &nd));
+      worst[t] = PetscMax(worst[t], nd / nv);
+    }
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "coarse: forward %.3e transpose %.3e\n", (double)worst[0], (double)worst[1]));
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(VecDestroy(&c));
+  PetscCall(VecDestroy(&v));
+  PetscCall(VecDestroy(&Av));
+  PetscCall(VecDestroy(&w));
+  PetscFunctionReturn(0);
+}
+
 /* The setter -set names, with a value other than the default. */
 static PetscErrorCode ChangeOne(PC pc)
 {
@@ -164,7 +207,7 @@ static PetscErrorCode ChangeOne(PC pc)
   else if (what == "subdomain_size") PetscCall(PCGDSWSetSubdomainSize(pc, 200));
   else if (what == "overlap") PetscCall(PCGDSWSetOverlap(pc, 2));
   else if (what == "coarse_space") PetscCall(PCGDSWSetCoarseSpaceType(pc, PC_GDSW_COARSE_NONE));
-  else if (what == "combination") PetscCall(PCGDSWSetCombinationType(pc, PC_GDSW_MULTIPLICATIVE));
+  else if (what == "combination") PetscCall(PCGDSWSetCombinationType(pc, PC_GDSW_ADDITIVE));
   else if (what == "first_level_type") PetscCall(PCGDSWSetFirstLevelType(pc, PC_GDSW_FIRST_LEVEL_RESTRICTED));
   else if (what == "local_solver") PetscCall(PCGDSWSetLocalSolverType(pc, PC_GDSW_LOCAL_INCOMPLETE));
   else SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-set %s is not one of the setters listed by -help", name);
@@ -198,6 +241,8 @@ static PetscErrorCode Run(const std::string &c)
     PetscCall(CheckAdjoint(pc, A));
     PetscCall(Solve(ksp, PETSC_FALSE, "forward"));
     PetscCall(Solve(ksp, PETSC_TRUE, "transpose"));
+  } else if (c == "coarse_exact") {
+    PetscCall(CheckCoarseExact(pc, A));
   } else if (c == "setters") {
     PetscCall(Solve(ksp, PETSC_FALSE, "first"));
     PetscCall(ChangeOne(pc));

@@ -21,8 +21,9 @@ PETSC_EXTERN const char *const PCGDSWCoarseSpaceTypes[];
 
 /* How the two levels are combined. */
 typedef enum {
-  PC_GDSW_ADDITIVE,      /* M^-1 = Phi A0^-1 Phi^T + sum_i R_i^T A_i^-1 R_i (symmetric) */
-  PC_GDSW_MULTIPLICATIVE /* coarse correction first, local solves on the updated residual */
+  PC_GDSW_ADDITIVE,       /* M^-1 = Phi A0^-1 Phi^T + sum_i R_i^T A_i^-1 R_i (symmetric) */
+  PC_GDSW_MULTIPLICATIVE, /* coarse correction first, local solves on the updated residual */
+  PC_GDSW_BALANCED        /* coarse correction before and after the local solves (symmetric; the default) */
 } PCGDSWCombinationType;
 PETSC_EXTERN const char *const PCGDSWCombinationTypes[];
 

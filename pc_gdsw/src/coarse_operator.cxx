@@ -4,7 +4,10 @@
    so A_0 = sum_i Phi_Gamma_i^T (A_GammaI Phi_I + A^_GammaGamma Phi_Gamma)_i: a dense block per
    subdomain from its own matrices, each Gamma-Gamma coupling counted once (by the subdomain of
    smallest id containing both nodes). No parallel triple product is needed. Otherwise (a kept
-   basis with new values, or an inexact extension) A_0 comes from MatPtAP. */
+   basis with new values, or an inexact extension) A_0 comes from MatPtAP.
+   The balanced combination also needs A Phi: the sum of the same blocks C_i = (A_GammaI Phi_I +
+   A^_GammaGamma Phi_Gamma)_i on the interface rows, or MatMatMult where A_0 needs MatPtAP; and
+   A^T Phi (MatTransposeMatMult) when A is not symmetric. */
 #include "gdswimpl.h"
 #include <petscblaslapack.h>
 #include <algorithm>
@@ -31,8 +34,9 @@ static PetscInt FirstCommon(const std::vector<PetscInt> &a, const std::vector<Pe
   return -1;
 }
 
-/* block = Phi_Gamma^T (A_GammaI Phi_I + A^_GammaGamma Phi_Gamma), ncols x ncols, column-major */
-static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, std::vector<PetscScalar> &block)
+/* block = Phi_Gamma^T C, ncols x ncols, column-major, with C = A_GammaI Phi_I + A^_GammaGamma Phi_Gamma
+   (nG x ncols, row-major), the subdomain's part of A Phi */
+static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, std::vector<PetscScalar> &block, std::vector<PetscScalar> &C)
 {
   PC_GDSW          *gd = (PC_GDSW *)pc->data;
   const PetscInt    bs = gd->bs, nloc = (PetscInt)s.nodes.size() * bs;
@@ -68,7 +72,8 @@ static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, std:
   }
   /* C = A_GammaI Phi_I + A^_GammaGamma Phi_Gamma, row-major nG x ncols: every coupling adds a
      contiguous row of Phi (copied row-major once), so the inner loop runs over the columns */
-  std::vector<PetscScalar> X((nI + nG) * ncols), C(nG * ncols, 0.0);
+  std::vector<PetscScalar> X((nI + nG) * ncols);
+  C.assign(nG * ncols, 0.0);
   for (PetscInt j = 0; j < ncols; j++) {
     for (PetscInt r = 0; r < nI; r++) X[r * ncols + j] = phiI[j * nI + r];
     for (PetscInt r = 0; r < nG; r++) X[(nI + r) * ncols + j] = phiG[j * nG + r];
@@ -100,19 +105,88 @@ static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, std:
   PetscFunctionReturn(0);
 }
 
-/* Every subdomain's dense block, computed once for both the preallocation and the values. */
-static PetscErrorCode LocalBlocks(PC pc, std::vector<std::vector<PetscScalar>> &blocks)
+/* Every subdomain's dense blocks, computed once for both the preallocation and the values. */
+static PetscErrorCode LocalBlocks(PC pc, std::vector<std::vector<PetscScalar>> &blocks, std::vector<std::vector<PetscScalar>> &C)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
 
   PetscFunctionBegin;
   blocks.resize(gd->sub->size());
+  C.resize(gd->sub->size());
   for (size_t i = 0; i < gd->sub->size(); i++) {
     const Subdomain &s = (*gd->sub)[i];
     PetscInt         ncols = 0;
     for (const auto &g : s.groups) ncols += g.ncols;
-    if (ncols) PetscCall(LocalBlock(pc, s, ncols, blocks[i]));
+    if (ncols) PetscCall(LocalBlock(pc, s, ncols, blocks[i], C[i]));
   }
+  PetscFunctionReturn(0);
+}
+
+/* The global rows of a subdomain's interface dofs. */
+static PetscErrorCode GammaRows(PC pc, const Subdomain &s, std::vector<PetscInt> &rows)
+{
+  PC_GDSW        *gd = (PC_GDSW *)pc->data;
+  const PetscInt  bs = gd->bs;
+  PetscInt        nG;
+  const PetscInt *G;
+
+  PetscFunctionBegin;
+  PetscCall(ISGetLocalSize(s.isG, &nG));
+  PetscCall(ISGetIndices(s.isG, &G));
+  rows.resize(nG);
+  for (PetscInt r = 0; r < nG; r++) rows[r] = s.nodes[G[r] / bs] * bs + G[r] % bs;
+  PetscCall(ISRestoreIndices(s.isG, &G));
+  PetscFunctionReturn(0);
+}
+
+/* A Phi = sum_i R_Gamma_i^T C_i. A row's length is at most the sum of the column counts of the
+   subdomains that share its node, split by the columns' owner: summed at the node's owner along
+   the node star forest (assembly drops what is not used). */
+static PetscErrorCode AssembleAPhi(PC pc, const std::vector<std::vector<PetscScalar>> &C)
+{
+  PC_GDSW           *gd = (PC_GDSW *)pc->data;
+  const PetscInt     bs = gd->bs;
+  const PetscInt    *colRange;
+  const PetscSFNode *owner;
+  PetscInt           nroots, nleaves, m, M, n, N;
+
+  PetscFunctionBegin;
+  if (!gd->APhi) {
+    PetscCall(MatGetOwnershipRangesColumn(gd->Phi, &colRange));
+    PetscCall(PetscSFGetGraph(gd->nodeSF, &nroots, &nleaves, nullptr, &owner));
+    std::vector<PetscInt> leafD(nleaves, 0), leafO(nleaves, 0), rootD(nroots, 0), rootO(nroots, 0);
+    for (const auto &s : *gd->sub) {
+      const std::vector<PetscInt> cols = Columns(s);
+      for (size_t a = 0; a < s.nodes.size(); a++) {
+        if ((*gd->sets)[s.setOf[a]].size() < 2) continue;
+        const PetscInt leaf = s.leaf0 + (PetscInt)a, r = owner[leaf].rank;
+        for (PetscInt c : cols) (c >= colRange[r] && c < colRange[r + 1] ? leafD : leafO)[leaf]++;
+      }
+    }
+    PetscCall(PetscSFReduceBegin(gd->nodeSF, MPIU_INT, leafD.data(), rootD.data(), MPI_SUM));
+    PetscCall(PetscSFReduceEnd(gd->nodeSF, MPIU_INT, leafD.data(), rootD.data(), MPI_SUM));
+    PetscCall(PetscSFReduceBegin(gd->nodeSF, MPIU_INT, leafO.data(), rootO.data(), MPI_SUM));
+    PetscCall(PetscSFReduceEnd(gd->nodeSF, MPIU_INT, leafO.data(), rootO.data(), MPI_SUM));
+    PetscCall(MatGetLocalSize(gd->Phi, &m, &n));
+    PetscCall(MatGetSize(gd->Phi, &M, &N));
+    std::vector<PetscInt> dnz(nroots * bs), onz(nroots * bs);
+    for (PetscInt a = 0; a < nroots; a++)
+      for (PetscInt c = 0; c < bs; c++) dnz[a * bs + c] = std::min(rootD[a], n), onz[a * bs + c] = std::min(rootO[a], N - n);
+    PetscCall(MatCreate(PetscObjectComm((PetscObject)pc), &gd->APhi));
+    PetscCall(MatSetType(gd->APhi, MATAIJ));
+    PetscCall(MatSetSizes(gd->APhi, m, n, M, N));
+    PetscCall(MatXAIJSetPreallocation(gd->APhi, 1, dnz.data(), onz.data(), nullptr, nullptr));
+  } else PetscCall(MatZeroEntries(gd->APhi));
+  for (size_t i = 0; i < gd->sub->size(); i++) {
+    const Subdomain            &s    = (*gd->sub)[i];
+    const std::vector<PetscInt> cols = Columns(s);
+    std::vector<PetscInt>       rows;
+    if (cols.empty()) continue;
+    PetscCall(GammaRows(pc, s, rows));
+    PetscCall(MatSetValues(gd->APhi, (PetscInt)rows.size(), rows.data(), (PetscInt)cols.size(), cols.data(), C[i].data(), ADD_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(gd->APhi, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(gd->APhi, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);
 }
 
@@ -139,14 +213,20 @@ PetscErrorCode GDSWAssembleCoarseOperator(PC pc, PetscBool basisCurrent)
   PetscFunctionBegin;
   local = (PetscBool)(basisCurrent && !gd->keptCols && gd->exactExtension);
   PetscCallMPI(MPIU_Allreduce(&local, &localAll, 1, MPIU_BOOL, MPI_LAND, PetscObjectComm((PetscObject)pc)));
-  if (gd->A0 && gd->a0ByPtAP != !localAll) PetscCall(MatDestroy(&gd->A0)); /* the other method made it */
+  const PetscBool balanced = (PetscBool)(gd->combination == PC_GDSW_BALANCED);
+  if (gd->A0 && gd->a0ByPtAP != !localAll) { /* the other method made them */
+    PetscCall(MatDestroy(&gd->A0));
+    PetscCall(MatDestroy(&gd->APhi));
+  }
   gd->a0ByPtAP = (PetscBool)!localAll;
   if (!localAll) {
     PetscCall(MatPtAP(gd->A, gd->Phi, gd->A0 ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, 2.0, &gd->A0));
+    if (balanced) PetscCall(MatMatMult(gd->A, gd->Phi, gd->APhi ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, PETSC_DEFAULT, &gd->APhi));
     PetscFunctionReturn(0);
   }
-  std::vector<std::vector<PetscScalar>> blocks;
-  PetscCall(LocalBlocks(pc, blocks));
+  std::vector<std::vector<PetscScalar>> blocks, C;
+  PetscCall(LocalBlocks(pc, blocks, C));
+  if (balanced) PetscCall(AssembleAPhi(pc, C));
   if (!gd->A0) {
     PetscInt n, N;
     Mat      pre;

@@ -66,6 +66,7 @@ PetscErrorCode GDSWSetUpCoarseSolver(PC pc, PetscBool basisCurrent)
       }
     }
     PetscCall(MatCreateVecs(gd->A0, &gd->x0, &gd->r0));
+    if (gd->combination == PC_GDSW_BALANCED) PetscCall(VecDuplicate(gd->x0, &gd->c0));
   } else PetscCall(KSPSetOperators(gd->coarseKsp, gd->A0, gd->A0));
   PetscCall(KSPSetUp(gd->coarseKsp));
   PetscCall(KSPGetPC(gd->coarseKsp, &cpc));
@@ -88,6 +89,44 @@ PetscErrorCode GDSWApplyCoarse(PC pc, Vec x, Vec y, PetscBool transpose)
   if (transpose) PetscCall(KSPSolveTranspose(gd->coarseKsp, gd->r0, gd->x0));
   else PetscCall(KSPSolve(gd->coarseKsp, gd->r0, gd->x0));
   PetscCall(MatMultAdd(gd->Phi, gd->x0, y, y));
+  PetscCall(PetscLogEventEnd(GDSW_ApplyCoarse, pc, x, y, 0));
+  PetscFunctionReturn(0);
+}
+
+/* Balanced (hybrid) combination, symmetric when A is:
+     y = Q0 x + (I - Q0 A) M1 (I - A Q0) x,  Q0 = Phi A_0^{-1} Phi^T,
+   so that M A Phi = Phi: the coarse space is solved exactly and the local solves see only the
+   rest. With W = A Phi kept from the set-up it costs what the additive one does (one product
+   with Phi^T and one with Phi) plus two with W, which is sparse (interface rows only):
+     c = A_0^{-1} Phi^T x,  y = M1 (x - W c),  y += Phi (c - A_0^{-1} W^T y).
+   For a nonsymmetric A the product with (A^T Phi) or its transpose goes through A. Transposed,
+   y = Q0^T x + (I - Q0^T A^T) M1^T (I - A^T Q0^T) x. */
+PetscErrorCode GDSWApplyBalanced(PC pc, Vec x, Vec y, PetscBool transpose)
+{
+  PC_GDSW  *gd   = (PC_GDSW *)pc->data;
+  const bool viaA = !gd->symmetric;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(GDSW_ApplyCoarse, pc, x, y, 0));
+  PetscCall(MatMultTranspose(gd->Phi, x, gd->r0));
+  if (transpose) PetscCall(KSPSolveTranspose(gd->coarseKsp, gd->r0, gd->c0));
+  else PetscCall(KSPSolve(gd->coarseKsp, gd->r0, gd->c0));
+  if (transpose && viaA) { /* x - A^T Phi c */
+    PetscCall(MatMult(gd->Phi, gd->c0, gd->tmp2));
+    PetscCall(MatMultTranspose(gd->A, gd->tmp2, gd->tmp1));
+  } else PetscCall(MatMult(gd->APhi, gd->c0, gd->tmp1));
+  PetscCall(VecAYPX(gd->tmp1, -1.0, x));
+  PetscCall(PetscLogEventEnd(GDSW_ApplyCoarse, pc, x, y, 0));
+  PetscCall(GDSWApplyFirstLevel(pc, gd->tmp1, y, transpose));
+  PetscCall(PetscLogEventBegin(GDSW_ApplyCoarse, pc, x, y, 0));
+  if (!transpose && viaA) { /* (A^T Phi)^T y = Phi^T A y */
+    PetscCall(MatMult(gd->A, y, gd->tmp1));
+    PetscCall(MatMultTranspose(gd->Phi, gd->tmp1, gd->r0));
+  } else PetscCall(MatMultTranspose(gd->APhi, y, gd->r0));
+  if (transpose) PetscCall(KSPSolveTranspose(gd->coarseKsp, gd->r0, gd->x0));
+  else PetscCall(KSPSolve(gd->coarseKsp, gd->r0, gd->x0));
+  PetscCall(VecAXPY(gd->c0, -1.0, gd->x0));
+  PetscCall(MatMultAdd(gd->Phi, gd->c0, y, y));
   PetscCall(PetscLogEventEnd(GDSW_ApplyCoarse, pc, x, y, 0));
   PetscFunctionReturn(0);
 }

@@ -8,7 +8,7 @@
 #include <string>
 
 const char *const PCGDSWCoarseSpaceTypes[] = {"gdsw", "rgdsw", "none", "PCGDSWCoarseSpaceType", "PC_GDSW_COARSE_", nullptr};
-const char *const PCGDSWCombinationTypes[] = {"additive", "multiplicative", "PCGDSWCombinationType", "PC_GDSW_", nullptr};
+const char *const PCGDSWCombinationTypes[] = {"additive", "multiplicative", "balanced", "PCGDSWCombinationType", "PC_GDSW_", nullptr};
 const char *const PCGDSWFirstLevelTypes[]  = {"additive", "restricted", "PCGDSWFirstLevelType", "PC_GDSW_FIRST_LEVEL_", nullptr};
 const char *const PCGDSWRGDSWWeightTypes[] = {"equal", "distance", "PCGDSWRGDSWWeightType", "PC_GDSW_RGDSW_WEIGHTS_", nullptr};
 const char *const PCGDSWLocalSolverTypes[] = {"exact", "incomplete", "adaptive", "PCGDSWLocalSolverType", "PC_GDSW_LOCAL_", nullptr};
@@ -105,14 +105,17 @@ static PetscErrorCode PCReset_GDSW(PC pc)
   PetscCall(MatDestroy(&gd->PhiFull));
   PetscCall(ISDestroy(&gd->keptCols));
   PetscCall(MatDestroy(&gd->A0));
+  PetscCall(MatDestroy(&gd->APhi));
   PetscCall(KSPDestroy(&gd->coarseKsp));
   PetscCall(VecDestroy(&gd->r0));
   PetscCall(VecDestroy(&gd->x0));
+  PetscCall(VecDestroy(&gd->c0));
   PetscCall(VecDestroy(&gd->work));
   PetscCall(VecDestroy(&gd->workOut));
   PetscCall(VecScatterDestroy(&gd->restrictTo));
   PetscCall(VecScatterDestroy(&gd->prolongFrom));
   PetscCall(VecDestroy(&gd->tmp1));
+  PetscCall(VecDestroy(&gd->tmp2));
   PetscCall(PetscFree(gd->nonArr));
   PetscCall(PetscFree(gd->ovlArr));
   gd->coarseDim = 0;
@@ -200,7 +203,7 @@ static PetscErrorCode PCSetUp_GDSW(PC pc)
       else PetscCall(PetscInfo(pc, "the decomposition has no interface: no coarse level\n"));
     }
     PetscCall(GDSWSetUpFirstLevel(pc, MAT_INITIAL_MATRIX));
-    if (gd->coarseActive && gd->combination == PC_GDSW_MULTIPLICATIVE) PetscCall(MatCreateVecs(gd->A, &gd->tmp1, nullptr)); /* residual after the coarse correction */
+    if (gd->coarseActive && gd->combination != PC_GDSW_ADDITIVE) PetscCall(MatCreateVecs(gd->A, &gd->tmp1, &gd->tmp2)); /* residual after the coarse correction */
   } else {
     /* same pattern, new values (Newton, time stepping): numeric refactorisations only */
     PetscCall(GetAIJOperator(pc, MAT_REUSE_MATRIX));
@@ -231,6 +234,8 @@ static PetscErrorCode Apply(PC pc, Vec x, Vec y, PetscBool transpose)
     else PetscCall(MatMult(pc->pmat, y, gd->tmp1));
     PetscCall(VecAYPX(gd->tmp1, -1.0, x));
     PetscCall(second(pc, gd->tmp1, y, transpose));
+  } else if (gd->coarseActive && gd->combination == PC_GDSW_BALANCED) {
+    PetscCall(GDSWApplyBalanced(pc, x, y, transpose));
   } else {
     PetscCall(GDSWApplyFirstLevel(pc, x, y, transpose));
     if (gd->coarseActive) PetscCall(GDSWApplyCoarse(pc, x, y, transpose));
@@ -639,8 +644,8 @@ static PetscErrorCode PCGDSWSetCombinationType_GDSW(PC pc, PCGDSWCombinationType
   PC_GDSW *gd = (PC_GDSW *)pc->data;
 
   PetscFunctionBegin;
-  GDSW_CHECK_ENUM(pc, t, PC_GDSW_MULTIPLICATIVE, PCGDSWCombinationTypes);
-  if (t != gd->combination) pc->setupcalled = 0; /* the multiplicative variant has a work vector */
+  GDSW_CHECK_ENUM(pc, t, PC_GDSW_BALANCED, PCGDSWCombinationTypes);
+  if (t != gd->combination) pc->setupcalled = 0; /* the multiplicative and balanced ones have work vectors, the balanced one W */
   gd->combination = t;
   PetscFunctionReturn(0);
 }
@@ -787,7 +792,9 @@ static PetscErrorCode PCDestroy_GDSW(PC pc)
    where the columns of Phi are the null space of the operator (rigid-body modes for elasticity)
    restricted to the interface components of a nonoverlapping decomposition (faces, edges and
    vertices, shared by the same subdomains) and extended harmonically into the subdomains
-   [HKR16a], and A_i is the operator on the overlapping subdomain i.
+   [HKR16a], and A_i is the operator on the overlapping subdomain i. By default the coarse term
+   Q_0 = Phi (Phi^T A Phi)^{-1} Phi^T and the local term M_1 are combined in the balanced form
+   Q_0 + (I - Q_0 A) M_1 (I - A Q_0) (see `PCGDSWSetCombinationType()`).
 
    Options Database Keys:
 +  -pc_gdsw_subdomains <-1> - subdomains per MPI rank, METIS on the rank's node graph; -1 (`PETSC_DECIDE`): about -pc_gdsw_subdomain_size dofs each (see `PCGDSWSetSubdomainsPerRank()`)
@@ -797,7 +804,7 @@ static PetscErrorCode PCDestroy_GDSW(PC pc)
 .  -pc_gdsw_coarse_space <gdsw> - gdsw, rgdsw or none (see `PCGDSWSetCoarseSpaceType()`)
 .  -pc_gdsw_rgdsw_weights <distance> - RGDSW's partition of unity, distance or equal (see `PCGDSWSetRGDSWWeightType()`)
 .  -pc_gdsw_rotations <true> - false: translations only, GDSW-nr (see `PCGDSWSetRotations()`)
-.  -pc_gdsw_combination <additive> - additive or multiplicative (see `PCGDSWSetCombinationType()`)
+.  -pc_gdsw_combination <balanced> - balanced, additive or multiplicative (see `PCGDSWSetCombinationType()`)
 .  -pc_gdsw_first_level_type <additive> - additive or restricted, RAS (see `PCGDSWSetFirstLevelType()`)
 .  -pc_gdsw_reuse_coarse_basis <false> - keep Phi when the operator's values change (see `PCGDSWSetReuseCoarseBasis()`)
 .  -pc_gdsw_local_solver <exact> - exact, incomplete or adaptive local solvers of the first level (see `PCGDSWSetLocalSolverType()`)
@@ -826,7 +833,10 @@ static PetscErrorCode PCDestroy_GDSW(PC pc)
 .  * - C. R. Dohrmann, O. B. Widlund. On the design of small coarse spaces for domain decomposition algorithms. SIAM J. Sci. Comput. 39(4), 2017 [DW17] (RGDSW).
 .  * - A. Heinlein, A. Klawonn, O. Rheinbach, O. B. Widlund. Improving the parallel performance of overlapping Schwarz methods by using a smaller energy minimizing coarse space. Domain Decomposition Methods in Science and Engineering XXIV, Lect. Notes Comput. Sci. Eng. 125, Springer, 2018 (RGDSW in parallel).
 .  * - A. Heinlein, A. Klawonn, O. Rheinbach. A parallel implementation of a two-level overlapping Schwarz method with energy-minimizing coarse space based on Trilinos. SIAM J. Sci. Comput. 38(6), 2016 [HKR16a].
--  * - A. Heinlein, A. Klawonn, O. Rheinbach. Parallel two-level overlapping Schwarz methods in fluid-structure interaction. Numerical Mathematics and Advanced Applications ENUMATH 2015, Lect. Notes Comput. Sci. Eng. 112, Springer, 2016 [HKR16b].
+.  * - A. Heinlein, A. Klawonn, O. Rheinbach. Parallel two-level overlapping Schwarz methods in fluid-structure interaction. Numerical Mathematics and Advanced Applications ENUMATH 2015, Lect. Notes Comput. Sci. Eng. 112, Springer, 2016 [HKR16b].
+.  * - J. Mandel. Balancing domain decomposition. Commun. Numer. Methods Eng. 9(3), 1993 [Man93] (the balanced combination).
+.  * - A. Toselli, O. B. Widlund. Domain Decomposition Methods: Algorithms and Theory. Springer, 2005 [TW05].
+-  * - J. M. Tang, R. Nabben, C. Vuik, Y. A. Erlangga. Comparison of two-level preconditioners derived from deflation, domain decomposition and multigrid methods. J. Sci. Comput. 39(3), 2009 [TNVE09].
 
    Level: intermediate
 
@@ -847,7 +857,7 @@ PETSC_EXTERN PetscErrorCode PCCreate_GDSW(PC pc)
   gd->conditionMax     = 25;
   gd->overlap          = 1;
   gd->coarseType       = PC_GDSW_COARSE_GDSW;
-  gd->combination      = PC_GDSW_ADDITIVE;
+  gd->combination      = PC_GDSW_BALANCED;
   gd->firstLevel       = PC_GDSW_FIRST_LEVEL_ADDITIVE;
   gd->rotations        = PETSC_TRUE;
   gd->rgdswWeights     = PC_GDSW_RGDSW_WEIGHTS_DISTANCE;
@@ -1312,12 +1322,19 @@ PetscErrorCode PCGDSWGetRotations(PC pc, PetscBool *flg)
 
    Input Parameters:
 +  pc - the preconditioner context
--  type - `PC_GDSW_ADDITIVE` (the default, symmetric: Phi A_0^{-1} Phi^T + sum_i R_i^T A_i^{-1} R_i) or `PC_GDSW_MULTIPLICATIVE` (the coarse correction first, then the local solves on the updated residual; nonsymmetric, one more product with the operator)
+-  type - `PC_GDSW_BALANCED` (the default; see below), `PC_GDSW_ADDITIVE` (symmetric: Q_0 + M_1, with Q_0 = Phi A_0^{-1} Phi^T and M_1 = sum_i R_i^T A_i^{-1} R_i), `PC_GDSW_MULTIPLICATIVE` (the coarse correction first, then the local solves on the updated residual; nonsymmetric) or `PC_GDSW_BALANCED`: coarse correction before and after the local solves, Q_0 + (I - Q_0 A) M_1 (I - A Q_0); symmetric
 
    Options Database Key:
-.  -pc_gdsw_combination <additive,multiplicative> - sets the type
+.  -pc_gdsw_combination <additive,multiplicative,balanced> - sets the type
 
-   Note:
+   Notes:
+   The balanced (hybrid, [Man93], [TW05] Sec. 2.5.2; BNN in [TNVE09]) combination solves the coarse space exactly,
+   M A Phi = Phi, so the local solves act only on what the coarse space cannot represent; it keeps
+   W = A Phi from the set-up (nonzero on interface rows only after an exact extension, summed from
+   the blocks that also give A_0), and then costs what the additive one does plus two products with W.
+   Its condition number is at most the additive one's. For a nonsymmetric operator the products
+   with (A^T Phi) go through A.
+
    A new value makes the next `PCSetUp()` rebuild the preconditioner.
 
    Level: intermediate

@@ -106,18 +106,19 @@ typedef struct {
   PetscInt  counts[3];                    /* faces, edges, vertices (global) */
   /* coarse level */
   Mat Phi, A0;
+  Mat APhi;                               /* W = A Phi, for the balanced combination */
   PetscBool exactExtension;               /* every interior solve of the last extension was a direct factorisation */
   PetscBool a0ByPtAP;                     /* A0 was made by MatPtAP (and can be reused by it) */
   Mat PhiFull;                            /* Phi before dropping zero columns (== Phi if none) */
   IS  keptCols;
   KSP coarseKsp;
-  Vec r0, x0;
+  Vec r0, x0, c0;                         /* coarse work (c0: the balanced combination's first correction) */
   PetscInt coarseDim;
   PetscBool coarseActive;                 /* a coarse level exists (type not none, dimension > 0) */
   /* first level */
   Vec        work, workOut;               /* concatenated subdomain vectors */
   VecScatter restrictTo, prolongFrom;     /* global -> work, work(subset) -> global */
-  Vec        tmp1;                        /* global-size work for the multiplicative variant */
+  Vec        tmp1, tmp2;                  /* global-size work for the multiplicative and balanced combinations */
 } PC_GDSW;
 
 /* module entry points */
@@ -132,6 +133,7 @@ PETSC_INTERN PetscErrorCode GDSWSetUpCoarseSolver(PC, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWSetUpFirstLevel(PC, MatReuse);
 PETSC_INTERN PetscErrorCode GDSWApplyFirstLevel(PC, Vec, Vec, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWApplyCoarse(PC, Vec, Vec, PetscBool);
+PETSC_INTERN PetscErrorCode GDSWApplyBalanced(PC, Vec, Vec, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWDefaultFactorSolver(KSP, MatSolverType, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWSetUpLocalSolver(PC, KSP, gdsw::Subdomain &, gdsw::LocalMatrix);
 PETSC_INTERN PetscErrorCode GDSWViewLocalSolvers(PC, PetscViewer);
