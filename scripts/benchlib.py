@@ -69,6 +69,28 @@ def loadavg():
     return " ".join(f"{x:.2f}" for x in os.getloadavg())
 
 
+def _cpu_times():
+    """(steal, total) jiffies of all CPUs since boot (Linux /proc/stat), or None."""
+    try:
+        with open("/proc/stat") as f:
+            v = [int(x) for x in f.readline().split()[1:]]
+        return v[7] if len(v) > 7 else 0, sum(v[:8])
+    except OSError:
+        return None
+
+
+_CPU_AT_START = _cpu_times()
+
+
+def cpu_steal():
+    """The share of CPU time a virtual machine's host took for others since the script started:
+    timings of a run with a large share are slower than the code."""
+    now = _cpu_times()
+    if not now or not _CPU_AT_START or now[1] == _CPU_AT_START[1]:
+        return "unknown"
+    return f"{100.0 * (now[0] - _CPU_AT_START[0]) / (now[1] - _CPU_AT_START[1]):.1f} %"
+
+
 def portable(cmd):
     """A command line as a reader reruns it from the repository root: paths inside the repository
     relative to it, a temporary report file named report.json."""
@@ -80,7 +102,7 @@ def write_results(out, rows, cmds, producer, load_at_start=None):
     """out.csv with one row per run, out.cmd with the command of each run, to be run from the
     repository root (and the load average at the start, if given, and now)."""
     if load_at_start is not None:
-        producer += f"\n# load average (1, 5, 15 min) at start: {load_at_start}, at end: {loadavg()}"
+        producer += f"\n# load average (1, 5, 15 min) at start: {load_at_start}, at end: {loadavg()}; CPU steal during the runs: {cpu_steal()}"
     with open(out + ".csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()

@@ -42,7 +42,7 @@ static PetscErrorCode PrintSettings(PC pc)
   PetscInt              nsub, size, overlap;
   PCGDSWCoarseSpaceType coarse;
   PCGDSWRGDSWWeightType weights;
-  PCGDSWCombinationType combination;
+  PCCompositeType       combination;
   PCGDSWFirstLevelType  first;
   PCGDSWLocalSolverType local;
   PetscReal             conditionMax;
@@ -61,8 +61,9 @@ static PetscErrorCode PrintSettings(PC pc)
   PetscCall(PCGDSWGetReuseCoarseBasis(pc, &reuse));
   PetscCall(PCGDSWGetLocalSolverType(pc, &local));
   PetscCall(PCGDSWGetLocalConditionMax(pc, &conditionMax));
+  const char *const combinationName = combination == PC_COMPOSITE_ADDITIVE ? "additive" : combination == PC_COMPOSITE_MULTIPLICATIVE ? "multiplicative" : "symmetric_multiplicative";
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "settings: subdomains %" PetscInt_FMT " repartition %d subdomain_size %" PetscInt_FMT " overlap %" PetscInt_FMT " coarse_space %s rgdsw_weights %s rotations %d combination %s first_level_type %s reuse_coarse_basis %d local_solver %s local_condition_max %g\n",
-                        nsub, (int)repartition, size, overlap, PCGDSWCoarseSpaceTypes[coarse], PCGDSWRGDSWWeightTypes[weights], (int)rotations, PCGDSWCombinationTypes[combination], PCGDSWFirstLevelTypes[first], (int)reuse, PCGDSWLocalSolverTypes[local], (double)conditionMax));
+                        nsub, (int)repartition, size, overlap, PCGDSWCoarseSpaceTypes[coarse], PCGDSWRGDSWWeightTypes[weights], (int)rotations, combinationName, PCGDSWFirstLevelTypes[first], (int)reuse, PCGDSWLocalSolverTypes[local], (double)conditionMax));
   PetscFunctionReturn(0);
 }
 
@@ -152,7 +153,7 @@ static PetscErrorCode CheckAdjoint(PC pc, Mat A)
   PetscFunctionReturn(0);
 }
 
-/* The balanced combination solves the coarse space exactly: P A Phi = Phi and P^T A^T Phi = Phi,
+/* The symmetric multiplicative (balanced) combination solves the coarse space exactly: P A Phi = Phi and P^T A^T Phi = Phi,
    what neither the additive nor the multiplicative one does. Worst of three random c. */
 static PetscErrorCode CheckCoarseExact(PC pc, Mat A)
 {
@@ -207,7 +208,7 @@ static PetscErrorCode ChangeOne(PC pc)
   else if (what == "subdomain_size") PetscCall(PCGDSWSetSubdomainSize(pc, 200));
   else if (what == "overlap") PetscCall(PCGDSWSetOverlap(pc, 2));
   else if (what == "coarse_space") PetscCall(PCGDSWSetCoarseSpaceType(pc, PC_GDSW_COARSE_NONE));
-  else if (what == "combination") PetscCall(PCGDSWSetCombinationType(pc, PC_GDSW_ADDITIVE));
+  else if (what == "combination") PetscCall(PCGDSWSetCombinationType(pc, PC_COMPOSITE_ADDITIVE));
   else if (what == "first_level_type") PetscCall(PCGDSWSetFirstLevelType(pc, PC_GDSW_FIRST_LEVEL_RESTRICTED));
   else if (what == "local_solver") PetscCall(PCGDSWSetLocalSolverType(pc, PC_GDSW_LOCAL_INCOMPLETE));
   else SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-set %s is not one of the setters listed by -help", name);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 static const char help[] = "Feeds PCGDSW one kind of bad input (-case <name>) so that tests can check its error message.\n"
                            "Cases: nonsquare, unassembled, coordinates, nullspace_length, singular, zero_row_2d, floating, partial_node, uncovered, index_negative, index_large,\n"
-                           "coordinates_nan, coordinates_2d, nullspace_nan, empty_subdomain.\n";
+                           "coordinates_nan, coordinates_2d, nullspace_nan, nullspace_zero, empty_subdomain.\n";
 
 /* A block-diagonal operator kron(L, I_bs), L the 1D Laplacian with n nodes (Dirichlet rows at
    both ends unless -case floating), is enough to reach each check. */
@@ -110,6 +110,20 @@ int main(int argc, char **argv)
     if (c == "coordinates_nan") xyz[1] = std::numeric_limits<PetscReal>::quiet_NaN();
     PetscCall(PCSetOperators(pc, A, A));
     PetscCall(PCSetCoordinates(pc, dim, m / 3, xyz.data()));
+    PetscCall(PCSetUp(pc));
+  } else if (c == "nullspace_zero") { /* the constant, then a zero vector */
+    Vec          v[2];
+    MatNullSpace nsp;
+    PetscCall(Laplacian(n, 1, PETSC_TRUE, &A));
+    PetscCall(MatCreateVecs(A, &v[0], &v[1]));
+    PetscCall(VecSet(v[0], 1.0 / PetscSqrtReal((PetscReal)n)));
+    PetscCall(VecSet(v[1], 0.0));
+    PetscCall(MatNullSpaceCreate(PETSC_COMM_WORLD, PETSC_FALSE, 2, v, &nsp));
+    PetscCall(MatSetNearNullSpace(A, nsp));
+    PetscCall(MatNullSpaceDestroy(&nsp));
+    PetscCall(VecDestroy(&v[0]));
+    PetscCall(VecDestroy(&v[1]));
+    PetscCall(PCSetOperators(pc, A, A));
     PetscCall(PCSetUp(pc));
   } else if (c == "nullspace_nan") {
     Vec          v;

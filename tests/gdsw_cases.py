@@ -260,11 +260,12 @@ def matrix_types():
 @case
 def variants_gmres():
     """Restricted first level and multiplicative combination (nonsymmetric: GMRES) need fewer
-    iterations than the symmetric additive method, and so does the balanced combination."""
+    iterations than the symmetric additive method, and so does the symmetric multiplicative
+    (balanced) combination."""
     ref = elasticity("-n", 16, "-boxes", 4, "-ksp_type", "gmres", "-pc_gdsw_combination", "additive")["iterations"]
     ras = elasticity("-n", 16, "-boxes", 4, "-ksp_type", "gmres", "-pc_gdsw_combination", "additive", "-pc_gdsw_first_level_type", "restricted")["iterations"]
     mul = elasticity("-n", 16, "-boxes", 4, "-ksp_type", "gmres", "-pc_gdsw_combination", "multiplicative")["iterations"]
-    bal = elasticity("-n", 16, "-boxes", 4, "-ksp_type", "gmres", "-pc_gdsw_combination", "balanced")["iterations"]
+    bal = elasticity("-n", 16, "-boxes", 4, "-ksp_type", "gmres", "-pc_gdsw_combination", "symmetric_multiplicative")["iterations"]
     print("additive", ref, "restricted", ras, "multiplicative", mul, "balanced", bal)
     assert ras < ref and mul < ref and bal < ref
     between(ras, 10, 22, "RAS GMRES iterations")
@@ -283,6 +284,45 @@ def reuse_new_values():
         assert again == fresh, (again, fresh)
     kept = elasticity(*opts, "-resolve_jump", 1000, "-pc_gdsw_reuse_coarse_basis")[1]["iterations"]
     between(kept, fresh + 2, 2 * fresh, "iterations with the old coarse basis")
+
+
+@case
+def reuse_new_dirichlet_rows():
+    """MatZeroRowsColumns() on more rows keeps the pattern, so PETSc hands the PC the same-pattern
+    flag; the PC sees that its Dirichlet rows changed and rebuilds: -ksp_view counts the Dirichlet
+    dofs of x = 0, then of both ends (3 x 13^2, then twice that; the old set was kept before), and
+    the second solve equals a fresh run with both ends clamped (iterations, coarse dimension);
+    4 METIS subdomains per rank and 3^3 boxes, on 1 and 2 ranks; -info says the PC was rebuilt."""
+    for np in (1, 2):
+        for extra in (["-pc_gdsw_subdomains", 4], ["-boxes", 3]):
+            opts = ["-n", 12, *extra]
+            fresh = elasticity(*opts, "-clamp_both", np=np)
+            out = run([ELASTICITY, *opts, "-resolve_clamp_both", "-ksp_view", "-info", ":pc"], np)
+            excluded = [int(x) for x in re.findall(r"(\d+) Dirichlet dofs excluded", out)]
+            assert excluded == [3 * 13 * 13, 2 * 3 * 13 * 13], (np, extra, excluded)
+            assert "Dirichlet rows changed with the same pattern" in out, out[-2000:]
+            again = [line.split() for line in out.splitlines() if line.startswith("dofs ")][-1]
+            assert (int(again[5]), int(again[9])) == (fresh["iterations"], fresh["coarse"]), (np, extra, again, fresh)
+
+
+@case
+def petsc4py_elasticity():
+    """pc_gdsw/examples/elasticity.py, the C driver's problem written with petsc4py, on 2 ranks
+    with -pc_type gdsw given as an option and the library loaded by -dll_append: the PC's type is
+    gdsw, CG converges (true relative residual below 1e-6: 100 times the rtol CG applies to the
+    preconditioned residual; measured 2e-7 and 5e-7), and the iterations equal the C
+    driver's on the same matrix, load, clamp and row layout within 1 (the two assemble in
+    different orders), at most 30, on 8^3 and 12^3 elements."""
+    example = os.path.join(os.path.dirname(__file__), "..", "pc_gdsw", "examples", "elasticity.py")
+    for n in (8, 12):
+        out = run(["/usr/bin/python3", example, "-n", n, "-dll_append", LIB, "-pc_type", "gdsw"], 2)
+        m = re.search(r"dofs (\d+) ranks 2 pc (\w+) iterations (\d+) reason (-?\d+) residual (\S+)", out)
+        assert m, out[-2000:]
+        dofs, pc, its, reason, residual = int(m.group(1)), m.group(2), int(m.group(3)), int(m.group(4)), float(m.group(5))
+        c = elasticity("-n", n, np=2)
+        assert (dofs, pc) == (c["dofs"], "gdsw") and reason > 0, (m.group(0), c)
+        between(residual, 0, 1e-6, f"true relative residual, petsc4py, n {n}")
+        between(its, c["iterations"] - 1, min(c["iterations"] + 1, 30), f"petsc4py iterations, n {n} (C driver {c['iterations']})")
 
 
 @case
@@ -408,7 +448,7 @@ def repartition():
     recovers the well-partitioned count (35 with PTScotch's mesh partition; 25-42 here, as PTScotch's
     parts vary from run to run). With every row on
     rank 0 (ksp ex56 on 2 ranks) the partitioner also fills the empty rank: 3 + 3 subdomains, and
-    the iterations of 6 subdomains on one rank (36)."""
+    about the iterations of 6 subdomains on one rank (31; the parts differ)."""
     thin = plate(0.05, partitioner="simple")
     whole, out = plate(0.05, "-pc_gdsw_repartition", partitioner="simple", view=True)
     assert "repartitioned (-pc_gdsw_repartition): the whole matrix graph split by ptscotch, not each rank's rows; 8 subdomains on rank 0" in out
@@ -420,14 +460,14 @@ def repartition():
     out = run(ex56, 2)
     assert "6 subdomains (from the matrix graph)" in out and "redistributed" not in out
     assert "split by ptscotch, not each rank's rows; 3 subdomains on rank 0" in out
-    between(cg_iterations(out), 30, 42, "ex56 on 2 ranks, repartitioned")
+    between(cg_iterations(out), 24, 38, "ex56 on 2 ranks, repartitioned")
 
 
 # ---- the PC as seen by PETSc users -----------------------------------------------------------
 @case
 def view_and_log():
     out = run([ELASTICITY, "-n", 8, "-boxes", 2, "-ksp_view", "-log_view"])
-    for s in ("type: gdsw", "coarse space gdsw, balanced combination", "8 subdomains (given by the application)",
+    for s in ("type: gdsw", "coarse space gdsw, symmetric_multiplicative combination", "8 subdomains (given by the application)",
               "12 faces, 6 edges, 1 vertices", "coarse dimension 105", "prefix -pc_gdsw_coarse_", "prefix -pc_gdsw_sub_",
               "GDSWDecomp", "GDSWInterface", "GDSWBasis", "GDSWExtension", "GDSWCoarseSetUp", "GDSWLocalFactor", "GDSWApply"):
         assert s in out, f"missing in -ksp_view/-log_view output: {s!r}"
@@ -437,7 +477,7 @@ def view_and_log():
         assert line in run([ELASTICITY, "-n", 16, "-ksp_view"] + opts, 2), f"missing in -ksp_view: {line!r}"
     out = run([ELASTICITY, "-n", 4, "-boxes", 2, "-help"])
     for s in ("-pc_gdsw_subdomains <now -1", "-pc_gdsw_subdomain_size <now", "-pc_gdsw_overlap <now 1", "-pc_gdsw_coarse_space <now gdsw", "-pc_gdsw_rgdsw_weights <now distance", "-pc_gdsw_rotations: <TRUE", "-pc_gdsw_repartition: <FALSE",
-              "-pc_gdsw_combination <now balanced", "-pc_gdsw_first_level_type <now additive", "-pc_gdsw_reuse_coarse_basis: <FALSE",
+              "-pc_gdsw_combination <now symmetric_multiplicative", "-pc_gdsw_first_level_type <now additive", "-pc_gdsw_reuse_coarse_basis: <FALSE",
               "-pc_gdsw_local_solver <now exact", "-pc_gdsw_local_condition_max <25.", "-pc_gdsw_subdomain_size <now 12000",
               "-pc_gdsw_sub_pc_type", "-pc_gdsw_extension_pc_type", "-pc_gdsw_coarse_pc_type"):
         assert s in out, f"missing in -help: {s!r}"
@@ -556,6 +596,7 @@ BAD = {
     "coordinates_nan": "PCSetCoordinates() coordinate 1 of local node 0 is not finite",
     "coordinates_2d": "PCSetCoordinates() gave 2-D coordinates but the operator has 3 dofs per node",
     "nullspace_nan": "near-null space vector 0 is not finite (NaN or Inf) in its local row 0",
+    "nullspace_zero": "near-null space vector 1 is zero",
 }
 
 
@@ -612,7 +653,7 @@ def api_transpose():
     solve (measured 14-26 both ways), on 1 and 2 ranks."""
     for np in (1, 2):
         for space in ("gdsw", "rgdsw", "none"):
-            for comb in ("additive", "multiplicative", "balanced"):
+            for comb in ("additive", "multiplicative", "symmetric_multiplicative"):
                 for first in ("additive", "restricted"):
                     r = api_lines("-case", "transpose", "-pc_gdsw_subdomains", 4, "-pc_gdsw_coarse_space", space,
                                   "-pc_gdsw_combination", comb, "-pc_gdsw_first_level_type", first, np=np)
@@ -628,8 +669,8 @@ def api_transpose():
 
 
 @case
-def balanced_coarse_exact():
-    """The balanced combination y = Q0 x + (I - Q0 A) M1 (I - A Q0) x, Q0 = Phi A_0^{-1} Phi^T,
+def combination_coarse_exact():
+    """The symmetric multiplicative (balanced) combination y = Q0 x + (I - Q0 A) M1 (I - A Q0) x, Q0 = Phi A_0^{-1} Phi^T,
     solves the coarse space exactly: P A Phi c = Phi c, and P^T A^T Phi c = Phi c, for random c
     to < 1e-10 relative, on the nonsymmetric convection-diffusion (through A and A^T) and on the
     symmetric Laplacian (beta 0, through the assembled W = A Phi), GDSW and RGDSW, additive and
@@ -642,9 +683,9 @@ def balanced_coarse_exact():
                     what = f"{space}, {first} first level, beta {beta}, {np} ranks"
                     r = {comb: api_lines("-case", "coarse_exact", "-pc_gdsw_subdomains", 4, "-beta", beta, "-pc_gdsw_coarse_space", space,
                                          "-pc_gdsw_combination", comb, "-pc_gdsw_first_level_type", first, np=np)["coarse"]
-                         for comb in ("balanced", "additive")}
+                         for comb in ("symmetric_multiplicative", "additive")}
                     for t in ("forward", "transpose"):
-                        between(float(r["balanced"][t]), 0, 1e-10, f"balanced |P A Phi c - Phi c| ({t}), {what}")
+                        between(float(r["symmetric_multiplicative"][t]), 0, 1e-10, f"symmetric multiplicative |P A Phi c - Phi c| ({t}), {what}")
                         assert float(r["additive"][t]) > 1e-3, (t, what, r)
 
 
@@ -723,14 +764,16 @@ def given_overlap_sets():
     """PCGDSWSetSubdomains with overlapping sets (-box_overlap k: each box grown by k element
     layers) equals -pc_gdsw_overlap k (k layers of the Q1 graph are k element layers): the same
     overlapping dofs, closed form (3 * sum_q |box_q grown by k|_1D ^ 3: 20577 and 36501 on 3^3
-    boxes of 12^3 elements), and the same iterations, on 1 and 2 ranks; given sets take
-    precedence over -pc_gdsw_overlap."""
+    boxes of 12^3 elements), and the same iterations within 1 (the two list the dofs of a set in
+    different orders, so the factorisations round differently: 32 and 33 at k = 2), on 1 and 2
+    ranks; given sets take precedence over -pc_gdsw_overlap."""
     n, b = 12, 3
     for np in (1, 2):
         for k in (0, 1, 2):
             graph = subdomain_dofs("-n", n, "-boxes", b, "-pc_gdsw_overlap", k, np=np)
             given = subdomain_dofs("-n", n, "-boxes", b, "-box_overlap", k, np=np)
-            assert graph == given == (graph[0], box_dofs(n, b, 0), box_dofs(n, b, k)), (k, graph, given)
+            assert graph[1:] == given[1:] == (box_dofs(n, b, 0), box_dofs(n, b, k)), (k, graph, given)
+            between(given[0], graph[0] - 1, graph[0] + 1, f"iterations with given overlapping sets, k {k}, {np} ranks (graph overlap: {graph[0]})")
         assert subdomain_dofs("-n", n, "-boxes", b, "-box_overlap", 1, "-pc_gdsw_overlap", 2, np=np)[2] == box_dofs(n, b, 1)
 
 
@@ -847,7 +890,7 @@ def bad_option_values():
                             ("overlap", -1, "is out of range: give the number of layers, 0 or more"),
                             ("coarse_space", "fancy", "is not one of: gdsw, rgdsw, none"),
                             ("rgdsw_weights", "far", "is not one of: equal, distance"),
-                            ("combination", "both", "is not one of: additive, multiplicative, balanced"),
+                            ("combination", "both", "is not one of: additive, multiplicative, symmetric_multiplicative"),
                             ("first_level_type", "ras", "is not one of: additive, restricted"),
                             ("rotations", "maybe", "is not true or false"),
                             ("repartition", "always", "is not true or false"),

@@ -12,10 +12,12 @@ static const char help[] = "Q1 linear elasticity on the unit cube (or square: pl
                            "  -jump_boxes <2>    boxes per direction of the coefficient checkerboard\n"
                            "  -nullspace <near>  near: MatSetNearNullSpace(rigid modes); coords: PCSetCoordinates; none\n"
                            "  -floating          no Dirichlet condition (the null space is attached to the operator)\n"
+                           "  -clamp_both        clamp x = 1 too\n"
                            "  -check_phi         report how well the coarse basis reproduces the rigid-body modes\n"
                            "  -check_coarse      compare the coarse operator with Phi^T (A Phi) and report the coarse solver (AIJ only)\n"
                            "  -report_subdomains report the dofs of all nonoverlapping and of all overlapping subdomains, and how many of the former are connected\n"
                            "  -resolve_jump <0>  then reassemble with this -jump (same pattern) and solve again\n"
+                           "  -resolve_clamp_both then reassemble with x = 1 clamped too (more Dirichlet rows, same pattern) and solve again\n"
                            "  -mat_type <aij>    any assembled type (aij, baij, sbaij), or is (MATIS: each rank's element layers are its subdomain, for PCBDDC)\n";
 
 #include <petscgdsw.h>
@@ -25,7 +27,7 @@ static const char help[] = "Q1 linear elasticity on the unit cube (or square: pl
 struct Problem {
   PetscInt  dim = 3, n = 8, boxes = 0, boxOverlap = -1, jumpBoxes = 2;
   PetscReal E = 1.0, nu = 0.3, jump = 1.0;
-  PetscBool floating = PETSC_FALSE;
+  PetscBool floating = PETSC_FALSE, clampBoth = PETSC_FALSE;
   PetscInt  k0, k1; /* node layers of the last coordinate (z in 3D, y in 2D) owned by this rank */
 };
 
@@ -115,7 +117,7 @@ static PetscErrorCode SubassembledLayout(const Problem &p, Mat A)
   PetscFunctionReturn(0);
 }
 
-/* Dirichlet condition on x = 0 (symmetric elimination), or, floating, a consistent load. */
+/* Dirichlet condition on x = 0, and x = 1 if clampBoth (symmetric elimination), or, floating, a consistent load. */
 static PetscErrorCode Constrain(const Problem &p, Mat A, Vec b, Vec x, MatNullSpace rigid)
 {
   PetscFunctionBegin;
@@ -125,7 +127,7 @@ static PetscErrorCode Constrain(const Problem &p, Mat A, Vec b, Vec x, MatNullSp
   }
   std::vector<PetscInt> rows;
   for (PetscInt q = p.k0 * LayerSize(p); q < p.k1 * LayerSize(p); q++)
-    if (q % (p.n + 1) == 0)
+    if (q % (p.n + 1) == 0 || (p.clampBoth && q % (p.n + 1) == p.n))
       for (PetscInt d = 0; d < p.dim; d++) rows.push_back(p.dim * q + d);
   PetscCall(VecSet(x, 0.0));
   PetscCall(MatZeroRowsColumns(A, (PetscInt)rows.size(), rows.data(), 1.0, x, b));
@@ -340,6 +342,7 @@ int main(int argc, char **argv)
   char        nsp[16] = "near";
   PetscBool   checkPhi = PETSC_FALSE, checkCoarse = PETSC_FALSE, reportSubdomains = PETSC_FALSE;
   PetscReal   resolveJump = 0;
+  PetscBool   resolveClamp = PETSC_FALSE;
 
   PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
   PetscCall(PCGDSWRegister());
@@ -356,10 +359,12 @@ int main(int argc, char **argv)
   PetscCall(PetscOptionsInt("-jump_boxes", "boxes per direction of the coefficient checkerboard", nullptr, p.jumpBoxes, &p.jumpBoxes, nullptr));
   PetscCall(PetscOptionsString("-nullspace", "near, coords or none", nullptr, nsp, nsp, sizeof(nsp), nullptr));
   PetscCall(PetscOptionsBool("-floating", "no Dirichlet condition", nullptr, p.floating, &p.floating, nullptr));
+  PetscCall(PetscOptionsBool("-clamp_both", "clamp x = 1 too", nullptr, p.clampBoth, &p.clampBoth, nullptr));
   PetscCall(PetscOptionsBool("-check_phi", "check that Phi reproduces the rigid-body modes", nullptr, checkPhi, &checkPhi, nullptr));
   PetscCall(PetscOptionsBool("-check_coarse", "compare the coarse operator with Phi^T (A Phi), report the coarse solver", nullptr, checkCoarse, &checkCoarse, nullptr));
   PetscCall(PetscOptionsBool("-report_subdomains", "report the dofs of the subdomains", nullptr, reportSubdomains, &reportSubdomains, nullptr));
   PetscCall(PetscOptionsReal("-resolve_jump", "reassemble with this jump and solve again (0: no)", nullptr, resolveJump, &resolveJump, nullptr));
+  PetscCall(PetscOptionsBool("-resolve_clamp_both", "reassemble with x = 1 clamped too and solve again", nullptr, resolveClamp, &resolveClamp, nullptr));
   PetscOptionsEnd();
   PetscCheck(p.dim == 2 || p.dim == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-dim %" PetscInt_FMT ": use 2 or 3", p.dim);
   PetscCheck(p.n >= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-n %" PetscInt_FMT ": need at least one element per direction", p.n);
@@ -445,8 +450,9 @@ int main(int argc, char **argv)
   if (checkPhi) PetscCall(CheckPhi(pc, rigid));
   if (checkCoarse) PetscCall(CheckCoarse(pc, A));
   if (reportSubdomains) PetscCall(ReportSubdomains(pc, A));
-  if (resolveJump > 0) { /* new values, same pattern: the PC refactors and re-extends */
-    p.jump = resolveJump;
+  if (resolveJump > 0 || resolveClamp) { /* new values, same pattern: the PC refactors and re-extends */
+    if (resolveJump > 0) p.jump = resolveJump;
+    if (resolveClamp) p.clampBoth = PETSC_TRUE;
     PetscCall(MatZeroEntries(A));
     PetscCall(VecZeroEntries(b));
     PetscCall(Assemble(p, A, b));

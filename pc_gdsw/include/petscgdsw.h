@@ -3,7 +3,7 @@
    Use it from any PETSc program with -pc_type gdsw after either
      -dll_append <prefix>/lib/libpetscgdsw.so   (no code change), or
      PCGDSWRegister()                           (when linking the library).
-   The manual pages are in pc_gdsw/src/gdsw.cxx. */
+   The manual pages are in pc_gdsw/src/api.cxx and (PCGDSW) pc_gdsw/src/gdsw.cxx. */
 #ifndef PETSCGDSW_H
 #define PETSCGDSW_H
 
@@ -18,14 +18,6 @@ typedef enum {
   PC_GDSW_COARSE_NONE   /* one-level overlapping Schwarz (OS1) */
 } PCGDSWCoarseSpaceType;
 PETSC_EXTERN const char *const PCGDSWCoarseSpaceTypes[];
-
-/* How the two levels are combined. */
-typedef enum {
-  PC_GDSW_ADDITIVE,       /* M^-1 = Phi A0^-1 Phi^T + sum_i R_i^T A_i^-1 R_i (symmetric) */
-  PC_GDSW_MULTIPLICATIVE, /* coarse correction first, local solves on the updated residual */
-  PC_GDSW_BALANCED        /* coarse correction before and after the local solves (symmetric; the default) */
-} PCGDSWCombinationType;
-PETSC_EXTERN const char *const PCGDSWCombinationTypes[];
 
 /* How local corrections are prolongated. */
 typedef enum {
@@ -78,8 +70,11 @@ PETSC_EXTERN PetscErrorCode PCGDSWSetRGDSWWeightType(PC, PCGDSWRGDSWWeightType);
 PETSC_EXTERN PetscErrorCode PCGDSWGetRGDSWWeightType(PC, PCGDSWRGDSWWeightType *);
 PETSC_EXTERN PetscErrorCode PCGDSWSetRotations(PC, PetscBool);
 PETSC_EXTERN PetscErrorCode PCGDSWGetRotations(PC, PetscBool *);
-PETSC_EXTERN PetscErrorCode PCGDSWSetCombinationType(PC, PCGDSWCombinationType);
-PETSC_EXTERN PetscErrorCode PCGDSWGetCombinationType(PC, PCGDSWCombinationType *);
+/* how the coarse correction Q0 and the local solves M1 are combined, as PCCOMPOSITE combines its
+   PCs: PC_COMPOSITE_ADDITIVE (Q0 + M1), PC_COMPOSITE_MULTIPLICATIVE (Q0, then M1 on the updated
+   residual) or PC_COMPOSITE_SYMMETRIC_MULTIPLICATIVE (Q0, M1, Q0: symmetric; the default) */
+PETSC_EXTERN PetscErrorCode PCGDSWSetCombinationType(PC, PCCompositeType);
+PETSC_EXTERN PetscErrorCode PCGDSWGetCombinationType(PC, PCCompositeType *);
 PETSC_EXTERN PetscErrorCode PCGDSWSetFirstLevelType(PC, PCGDSWFirstLevelType);
 PETSC_EXTERN PetscErrorCode PCGDSWGetFirstLevelType(PC, PCGDSWFirstLevelType *);
 PETSC_EXTERN PetscErrorCode PCGDSWSetReuseCoarseBasis(PC, PetscBool);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 /* Coarse basis Phi = [Phi_I; Phi_Gamma] (seed eq. 2): Phi_Gamma restricts the null space to
    each interface component (GDSW) or spreads it from each coarse node with a partition of
-   unity (RGDSW); Phi_I = -A_II^{-1} A_IGamma Phi_Gamma is its discrete harmonic extension,
+   unity (RGDSW: the coarse nodes and their weights are found here, from the components); Phi_I = -A_II^{-1} A_IGamma Phi_Gamma is its discrete harmonic extension,
    computed by independent interior solves in each subdomain. */
 #include "gdswimpl.h"
 #include <algorithm>
@@ -32,6 +32,63 @@ static void NullSpaceAt(const PC_GDSW *gd, const Subdomain &s, PetscInt a, const
   } else {
     for (PetscInt c = 0; c < bs; c++) out[c * bs + c] = 1.0;
   }
+}
+
+static bool Includes(const std::vector<PetscInt> &big, const std::vector<PetscInt> &small)
+{
+  return std::includes(big.begin(), big.end(), small.begin(), small.end());
+}
+
+/* Weight of coarse node v at interface node a (support node of a component whose coarse nodes
+   are `ancestors`): equal shares, or shares by inverse distance to the coarse nodes' centroids. */
+static PetscReal Weight(const PC_GDSW *gd, const Subdomain &s, PetscInt a, const CoarseGroup &v, const std::vector<const CoarseGroup *> &ancestors)
+{
+  if (ancestors.size() == 1) return 1.0;
+  if (gd->rgdswWeights == PC_GDSW_RGDSW_WEIGHTS_EQUAL || !gd->haveCoords) return 1.0 / ancestors.size();
+  auto inverseDistance = [&](const CoarseGroup &w) {
+    PetscReal d2 = 0;
+    for (PetscInt d = 0; d < gd->bs; d++) d2 += PetscSqr(s.nodeData[a * gd->bs + d] - w.center[d]);
+    return 1.0 / std::max(std::sqrt(d2), PETSC_SMALL);
+  };
+  PetscReal sum = 0;
+  for (const CoarseGroup *w : ancestors) sum += inverseDistance(*w);
+  return inverseDistance(v) / sum;
+}
+
+/* Whether coarse node w takes in component c: c itself, or a component whose sharing set strictly
+   contains c's. Pieces of an interface with the same sharing set (a face the matrix graph splits)
+   stay separate coarse nodes: taking in each other's nodes would make their columns equal. */
+static bool IsAncestor(const CoarseGroup &w, const CoarseGroup &c)
+{
+  return w.rep == c.rep || (w.sharing.size() > c.sharing.size() && Includes(w.sharing, c.sharing));
+}
+
+/* RGDSW: the coarse nodes are the components no other component's sharing set strictly
+   contains; each interface node is shared among the coarse nodes that take in its component,
+   with the weights above. */
+static void ReduceToCoarseNodes(const PC_GDSW *gd, const Subdomain &s, std::vector<CoarseGroup> &comps)
+{
+  std::vector<CoarseGroup> nodes;
+  for (const auto &c : comps) {
+    bool maximal = true;
+    for (const auto &d : comps)
+      if (d.sharing.size() > c.sharing.size() && Includes(d.sharing, c.sharing)) maximal = false;
+    if (maximal) nodes.push_back(c);
+  }
+  for (auto &v : nodes) v.support.clear(), v.weight.clear();
+  for (const auto &c : comps) {
+    std::vector<const CoarseGroup *> ancestors;
+    for (const auto &w : nodes)
+      if (IsAncestor(w, c)) ancestors.push_back(&w);
+    for (auto &v : nodes) {
+      if (!IsAncestor(v, c)) continue;
+      for (PetscInt a : c.support) {
+        v.support.push_back(a);
+        v.weight.push_back(Weight(gd, s, a, v, ancestors));
+      }
+    }
+  }
+  comps.swap(nodes);
 }
 
 /* Number of non-Dirichlet dofs of a group's support (the rows of its values). */
@@ -366,8 +423,10 @@ PetscErrorCode GDSWBuildCoarseBasis(PC pc)
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(GDSW_Basis, pc, 0, 0, 0));
-  for (auto &s : *gd->sub)
+  for (auto &s : *gd->sub) {
+    if (gd->coarseType == PC_GDSW_COARSE_RGDSW) ReduceToCoarseNodes(gd, s, s.groups);
     for (auto &g : s.groups) GroupValues(gd, s, g);
+  }
   PetscCall(NumberGroups(pc, &n));
   for (auto &s : *gd->sub) PetscCall(SetUpExtension(pc, s));
   PetscCall(PetscLogEventEnd(GDSW_Basis, pc, 0, 0, 0));

@@ -213,7 +213,7 @@ PetscErrorCode GDSWAssembleCoarseOperator(PC pc, PetscBool basisCurrent)
   PetscFunctionBegin;
   local = (PetscBool)(basisCurrent && !gd->keptCols && gd->exactExtension);
   PetscCallMPI(MPIU_Allreduce(&local, &localAll, 1, MPIU_BOOL, MPI_LAND, PetscObjectComm((PetscObject)pc)));
-  const PetscBool balanced = (PetscBool)(gd->combination == PC_GDSW_BALANCED);
+  const PetscBool balanced = (PetscBool)(gd->combination == PC_COMPOSITE_SYMMETRIC_MULTIPLICATIVE);
   if (gd->A0 && gd->a0ByPtAP != !localAll) { /* the other method made them */
     PetscCall(MatDestroy(&gd->A0));
     PetscCall(MatDestroy(&gd->APhi));

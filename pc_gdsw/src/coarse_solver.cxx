@@ -66,7 +66,7 @@ PetscErrorCode GDSWSetUpCoarseSolver(PC pc, PetscBool basisCurrent)
       }
     }
     PetscCall(MatCreateVecs(gd->A0, &gd->x0, &gd->r0));
-    if (gd->combination == PC_GDSW_BALANCED) PetscCall(VecDuplicate(gd->x0, &gd->c0));
+    if (gd->combination == PC_COMPOSITE_SYMMETRIC_MULTIPLICATIVE) PetscCall(VecDuplicate(gd->x0, &gd->c0));
   } else PetscCall(KSPSetOperators(gd->coarseKsp, gd->A0, gd->A0));
   PetscCall(KSPSetUp(gd->coarseKsp));
   PetscCall(KSPGetPC(gd->coarseKsp, &cpc));
@@ -93,7 +93,7 @@ PetscErrorCode GDSWApplyCoarse(PC pc, Vec x, Vec y, PetscBool transpose)
   PetscFunctionReturn(0);
 }
 
-/* Balanced (hybrid) combination, symmetric when A is:
+/* Symmetric multiplicative (balanced, hybrid) combination, symmetric when A is:
      y = Q0 x + (I - Q0 A) M1 (I - A Q0) x,  Q0 = Phi A_0^{-1} Phi^T,
    so that M A Phi = Phi: the coarse space is solved exactly and the local solves see only the
    rest. With W = A Phi kept from the set-up it costs what the additive one does (one product

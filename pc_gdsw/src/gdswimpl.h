@@ -77,7 +77,7 @@ typedef struct {
   PetscReal             conditionMax;     /* -pc_gdsw_local_condition_max: the adaptive first level's bound */
   PetscInt              overlap;          /* -pc_gdsw_overlap */
   PCGDSWCoarseSpaceType coarseType;
-  PCGDSWCombinationType combination;
+  PCCompositeType       combination;    /* additive, multiplicative or symmetric multiplicative */
   PCGDSWFirstLevelType  firstLevel;
   PetscBool             rotations;
   PCGDSWRGDSWWeightType rgdswWeights;
@@ -103,6 +103,7 @@ typedef struct {
   char      partitioner[64];              /* the MatPartitioning type that repartitioned the graph */
   PetscSF   nodeSF;                       /* leaves: nodes of every local Omega~_i; roots: owned nodes */
   PetscInt  nDirichletRows;               /* global count */
+  std::vector<PetscInt> *dirichletMask;   /* per owned node, its Dirichlet components as bits (the last fresh set-up's) */
   PetscInt  counts[3];                    /* faces, edges, vertices (global) */
   /* coarse level */
   Mat Phi, A0;
@@ -126,6 +127,7 @@ PETSC_INTERN PetscErrorCode GDSWBuildDecomposition(PC);
 PETSC_INTERN PetscErrorCode GDSWExtractSubdomainMatrices(PC, MatReuse);
 PETSC_INTERN PetscErrorCode GDSWSubmatrix(Mat, IS, IS, PetscInt, MatReuse, Mat *);
 PETSC_INTERN PetscErrorCode GDSWBuildInterface(PC);
+PETSC_INTERN PetscErrorCode GDSWDirichletRowsChanged(PC, PetscBool *);
 PETSC_INTERN PetscErrorCode GDSWBuildCoarseBasis(PC);
 PETSC_INTERN PetscErrorCode GDSWUpdateCoarseBasis(PC);
 PETSC_INTERN PetscErrorCode GDSWAssembleCoarseOperator(PC, PetscBool);

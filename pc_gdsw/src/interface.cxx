@@ -40,6 +40,21 @@ static PetscErrorCode DirichletMaskOwned(Mat A, PetscInt bs, std::vector<PetscIn
   PetscFunctionReturn(0);
 }
 
+/* Whether the operator's Dirichlet rows differ from those of the last fresh set-up. */
+PetscErrorCode GDSWDirichletRowsChanged(PC pc, PetscBool *changed)
+{
+  PC_GDSW              *gd = (PC_GDSW *)pc->data;
+  std::vector<PetscInt> mask;
+  PetscInt              count;
+  PetscBool             mine;
+
+  PetscFunctionBegin;
+  PetscCall(DirichletMaskOwned(gd->A, gd->bs, mask, &count));
+  mine = (PetscBool)(mask != *gd->dirichletMask);
+  PetscCallMPI(MPIU_Allreduce(&mine, changed, 1, MPIU_BOOL, MPI_LOR, PetscObjectComm((PetscObject)pc)));
+  PetscFunctionReturn(0);
+}
+
 /* Null-space data of the owned nodes: coordinates (rigid modes are formed per component, about
    its centroid), the operator's near-null space vectors, or nothing (translations). */
 static PetscErrorCode NodeDataOwned(PC pc, std::vector<PetscReal> &data)
@@ -67,8 +82,11 @@ static PetscErrorCode NodeDataOwned(PC pc, std::vector<PetscReal> &data)
     for (PetscInt k = 0; k < nv; k++) {
       PetscInt           n;
       const PetscScalar *x;
+      PetscReal          norm;
       PetscCall(VecGetLocalSize(v[k], &n));
       PetscCheck(n == rend - rstart, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "PCGDSW: near-null space vector %" PetscInt_FMT " has local length %" PetscInt_FMT " but the operator has %" PetscInt_FMT " local rows", k, n, rend - rstart);
+      PetscCall(VecNorm(v[k], NORM_1, &norm)); /* collective; a NaN makes it NaN, found below with its row */
+      PetscCheck(norm != 0, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_WRONG, "PCGDSW: near-null space vector %" PetscInt_FMT " is zero: each vector of MatSetNearNullSpace() spans coarse functions, so a zero one leaves the coarse space without them; remove it (for elasticity MatNullSpaceCreateRigidBody() builds the rigid-body modes)", k);
       PetscCall(VecGetArrayRead(v[k], &x));
       for (PetscInt a = 0; a < nn; a++)
         for (PetscInt c = 0; c < bs; c++) {
@@ -145,63 +163,6 @@ static PetscErrorCode FindComponents(PC pc, Subdomain &s, std::vector<CoarseGrou
   PetscFunctionReturn(0);
 }
 
-static bool Includes(const std::vector<PetscInt> &big, const std::vector<PetscInt> &small)
-{
-  return std::includes(big.begin(), big.end(), small.begin(), small.end());
-}
-
-/* Weight of coarse node v at interface node a (support node of a component whose coarse nodes
-   are `ancestors`): equal shares, or shares by inverse distance to the coarse nodes' centroids. */
-static PetscReal Weight(const PC_GDSW *gd, const Subdomain &s, PetscInt a, const CoarseGroup &v, const std::vector<const CoarseGroup *> &ancestors)
-{
-  if (ancestors.size() == 1) return 1.0;
-  if (gd->rgdswWeights == PC_GDSW_RGDSW_WEIGHTS_EQUAL || !gd->haveCoords) return 1.0 / ancestors.size();
-  auto inverseDistance = [&](const CoarseGroup &w) {
-    PetscReal d2 = 0;
-    for (PetscInt d = 0; d < gd->bs; d++) d2 += PetscSqr(s.nodeData[a * gd->bs + d] - w.center[d]);
-    return 1.0 / std::max(std::sqrt(d2), PETSC_SMALL);
-  };
-  PetscReal sum = 0;
-  for (const CoarseGroup *w : ancestors) sum += inverseDistance(*w);
-  return inverseDistance(v) / sum;
-}
-
-/* Whether coarse node w takes in component c: c itself, or a component whose sharing set strictly
-   contains c's. Pieces of an interface with the same sharing set (a face the matrix graph splits)
-   stay separate coarse nodes: taking in each other's nodes would make their columns equal. */
-static bool IsAncestor(const CoarseGroup &w, const CoarseGroup &c)
-{
-  return w.rep == c.rep || (w.sharing.size() > c.sharing.size() && Includes(w.sharing, c.sharing));
-}
-
-/* RGDSW: the coarse nodes are the components no other component's sharing set strictly
-   contains; each interface node is shared among the coarse nodes that take in its component,
-   with the weights above. */
-static void ReduceToCoarseNodes(const PC_GDSW *gd, const Subdomain &s, std::vector<CoarseGroup> &comps)
-{
-  std::vector<CoarseGroup> nodes;
-  for (const auto &c : comps) {
-    bool maximal = true;
-    for (const auto &d : comps)
-      if (d.sharing.size() > c.sharing.size() && Includes(d.sharing, c.sharing)) maximal = false;
-    if (maximal) nodes.push_back(c);
-  }
-  for (auto &v : nodes) v.support.clear(), v.weight.clear();
-  for (const auto &c : comps) {
-    std::vector<const CoarseGroup *> ancestors;
-    for (const auto &w : nodes)
-      if (IsAncestor(w, c)) ancestors.push_back(&w);
-    for (auto &v : nodes) {
-      if (!IsAncestor(v, c)) continue;
-      for (PetscInt a : c.support) {
-        v.support.push_back(a);
-        v.weight.push_back(Weight(gd, s, a, v, ancestors));
-      }
-    }
-  }
-  comps.swap(nodes);
-}
-
 PetscErrorCode GDSWBuildInterface(PC pc)
 {
   PC_GDSW  *gd = (PC_GDSW *)pc->data;
@@ -266,6 +227,7 @@ PetscErrorCode GDSWBuildInterface(PC pc)
   std::vector<PetscReal> rootData, leafData;
   PetscInt               nDir;
   PetscCall(DirichletMaskOwned(gd->A, bs, rootMask, &nDir));
+  *gd->dirichletMask = rootMask;
   PetscCallMPI(MPIU_Allreduce(&nDir, &gd->nDirichletRows, 1, MPIU_INT, MPI_SUM, comm));
   PetscCall(PetscSFBcastBegin(gd->nodeSF, MPIU_INT, rootMask.data(), leafMask.data(), MPI_REPLACE));
   PetscCall(PetscSFBcastEnd(gd->nodeSF, MPIU_INT, rootMask.data(), leafMask.data(), MPI_REPLACE));
@@ -303,7 +265,6 @@ PetscErrorCode GDSWBuildInterface(PC pc)
     PetscCall(FindComponents(pc, s, s.groups));
     for (const auto &c : s.groups)
       if (c.sharing[0] == s.gid) local[c.kind]++;
-    if (gd->coarseType == PC_GDSW_COARSE_RGDSW) ReduceToCoarseNodes(gd, s, s.groups);
   }
   PetscCallMPI(MPIU_Allreduce(local, gd->counts, 3, MPIU_INT, MPI_SUM, comm));
   PetscFunctionReturn(0);
