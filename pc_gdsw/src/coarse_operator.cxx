@@ -6,8 +6,7 @@
    smallest id containing both nodes). No parallel triple product is needed. Otherwise (a kept
    basis with new values, or an inexact extension) A_0 comes from MatPtAP.
    The balanced combination also needs A Phi: the sum of the same blocks C_i = (A_GammaI Phi_I +
-   A^_GammaGamma Phi_Gamma)_i on the interface rows, or MatMatMult where A_0 needs MatPtAP; and
-   A^T Phi (MatTransposeMatMult) when A is not symmetric. */
+   A^_GammaGamma Phi_Gamma)_i on the interface rows, or MatMatMult where A_0 needs MatPtAP. */
 #include "gdswimpl.h"
 #include <petscblaslapack.h>
 #include <algorithm>
@@ -35,7 +34,8 @@ static PetscInt FirstCommon(const std::vector<PetscInt> &a, const std::vector<Pe
 }
 
 /* block = Phi_Gamma^T C, ncols x ncols, column-major, with C = A_GammaI Phi_I + A^_GammaGamma Phi_Gamma
-   (nG x ncols, row-major), the subdomain's part of A Phi */
+   (nG x ncols, row-major), the subdomain's part of A Phi (returned; kept by the caller only when W
+   is assembled) */
 static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, std::vector<PetscScalar> &block, std::vector<PetscScalar> &C)
 {
   PC_GDSW          *gd = (PC_GDSW *)pc->data;
@@ -105,19 +105,21 @@ static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, std:
   PetscFunctionReturn(0);
 }
 
-/* Every subdomain's dense blocks, computed once for both the preallocation and the values. */
-static PetscErrorCode LocalBlocks(PC pc, std::vector<std::vector<PetscScalar>> &blocks, std::vector<std::vector<PetscScalar>> &C)
+/* Every subdomain's dense block, computed once for both the preallocation and the values; with
+   C, also each subdomain's part of A Phi (otherwise each is dropped after its block). */
+static PetscErrorCode LocalBlocks(PC pc, std::vector<std::vector<PetscScalar>> &blocks, std::vector<std::vector<PetscScalar>> *C)
 {
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
+  PC_GDSW                 *gd = (PC_GDSW *)pc->data;
+  std::vector<PetscScalar> scratch;
 
   PetscFunctionBegin;
   blocks.resize(gd->sub->size());
-  C.resize(gd->sub->size());
+  if (C) C->resize(gd->sub->size());
   for (size_t i = 0; i < gd->sub->size(); i++) {
     const Subdomain &s = (*gd->sub)[i];
     PetscInt         ncols = 0;
     for (const auto &g : s.groups) ncols += g.ncols;
-    if (ncols) PetscCall(LocalBlock(pc, s, ncols, blocks[i], C[i]));
+    if (ncols) PetscCall(LocalBlock(pc, s, ncols, blocks[i], C ? (*C)[i] : scratch));
   }
   PetscFunctionReturn(0);
 }
@@ -225,7 +227,7 @@ PetscErrorCode GDSWAssembleCoarseOperator(PC pc, PetscBool basisCurrent)
     PetscFunctionReturn(0);
   }
   std::vector<std::vector<PetscScalar>> blocks, C;
-  PetscCall(LocalBlocks(pc, blocks, C));
+  PetscCall(LocalBlocks(pc, blocks, balanced ? &C : nullptr));
   if (balanced) PetscCall(AssembleAPhi(pc, C));
   if (!gd->A0) {
     PetscInt n, N;
