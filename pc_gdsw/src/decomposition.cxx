@@ -724,12 +724,16 @@ PetscErrorCode GDSWSubmatrix(Mat M, IS rows, IS cols, PetscInt bs, MatReuse reus
        inserted row by row and took 1.3 of 9.2 s of the set-up */
     auto *csr = new CSR;
     csr->i.assign(nr + 1, 0);
-    for (PetscInt k = 0; k < nr; k++) {
-      for (PetscInt e = ia[r[k]]; e < ia[r[k] + 1]; e++)
-        if (map[ja[e]] >= 0) csr->j.push_back(map[ja[e]]), csr->a.push_back(va[e]);
-      csr->i[k + 1] = (PetscInt)csr->j.size();
+    for (PetscInt k = 0; k < nr; k++) { /* row lengths first: growing the arrays moved them repeatedly */
+      PetscInt len = 0;
+      for (PetscInt e = ia[r[k]]; e < ia[r[k] + 1]; e++) len += map[ja[e]] >= 0;
+      csr->i[k + 1] = csr->i[k] + len;
     }
-    if (csr->j.empty()) csr->j.push_back(0), csr->a.push_back(0.0); /* nonnull arrays */
+    csr->j.resize(std::max<PetscInt>(csr->i[nr], 1)); /* nonnull arrays */
+    csr->a.resize(csr->j.size());
+    for (PetscInt k = 0, p = 0; k < nr; k++)
+      for (PetscInt e = ia[r[k]]; e < ia[r[k] + 1]; e++)
+        if (map[ja[e]] >= 0) csr->j[p] = map[ja[e]], csr->a[p++] = va[e];
     PetscContainer container;
     PetscCall(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, nr, nc, csr->i.data(), csr->j.data(), csr->a.data(), S));
     PetscCall(PetscContainerCreate(PETSC_COMM_SELF, &container));
@@ -772,34 +776,41 @@ static PetscErrorCode PositionsIn(IS sub, const std::vector<PetscInt> &all, IS *
 
 /* A(Omega_i^delta, Omega_i^delta) and A(Omega~_i, Omega~_i) (Omega~_i lies inside Omega_i^delta):
    one parallel extraction of the rank's union U of overlapping subdomains, A(U, U), then each
-   subdomain's matrices from it. A(U, U) lives only for this: it is as large as the rank's part of A. */
+   subdomain's matrices from it. A(U, U) lives only for this: it is as large as the rank's part of A.
+   On one rank A itself is A(U, U). */
 PetscErrorCode GDSWExtractSubdomainMatrices(PC pc, MatReuse reuse)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
   auto    &sub = *gd->sub;
   const PetscInt n = (PetscInt)sub.size();
   std::vector<PetscInt> U;
-  IS       isU;
-  Mat     *AU;
+  IS        isU = nullptr;
+  Mat      *AU;
+  PetscBool sequential;
 
   PetscFunctionBegin;
-  for (auto &s : sub) {
-    PetscInt        no;
-    const PetscInt *ov;
-    PetscCall(ISGetLocalSize(s.overlap, &no));
-    PetscCall(ISGetIndices(s.overlap, &ov));
-    U.insert(U.end(), ov, ov + no);
-    PetscCall(ISRestoreIndices(s.overlap, &ov));
+  PetscCall(PetscObjectTypeCompare((PetscObject)gd->A, MATSEQAIJ, &sequential));
+  if (sequential) AU = &gd->A; /* one rank: U is every row, A(U, U) is A */
+  else {
+    for (auto &s : sub) {
+      PetscInt        no;
+      const PetscInt *ov;
+      PetscCall(ISGetLocalSize(s.overlap, &no));
+      PetscCall(ISGetIndices(s.overlap, &ov));
+      U.insert(U.end(), ov, ov + no);
+      PetscCall(ISRestoreIndices(s.overlap, &ov));
+    }
+    std::sort(U.begin(), U.end());
+    U.erase(std::unique(U.begin(), U.end()), U.end());
+    PetscCall(ISCreateGeneral(PETSC_COMM_SELF, (PetscInt)U.size(), U.data(), PETSC_USE_POINTER, &isU));
+    PetscCall(ISSetInfo(isU, IS_SORTED, IS_LOCAL, PETSC_TRUE, PETSC_TRUE));
+    PetscCall(MatCreateSubMatrices(gd->A, 1, &isU, &isU, MAT_INITIAL_MATRIX, &AU));
   }
-  std::sort(U.begin(), U.end());
-  U.erase(std::unique(U.begin(), U.end()), U.end());
-  PetscCall(ISCreateGeneral(PETSC_COMM_SELF, (PetscInt)U.size(), U.data(), PETSC_USE_POINTER, &isU));
-  PetscCall(ISSetInfo(isU, IS_SORTED, IS_LOCAL, PETSC_TRUE, PETSC_TRUE));
-  PetscCall(MatCreateSubMatrices(gd->A, 1, &isU, &isU, MAT_INITIAL_MATRIX, &AU));
   for (PetscInt i = 0; i < n; i++) {
     Subdomain &s = sub[i];
     IS         ovlInU;
-    PetscCall(PositionsIn(s.overlap, U, &ovlInU));
+    if (sequential) PetscCall(PetscObjectReference((PetscObject)(ovlInU = s.overlap)));
+    else PetscCall(PositionsIn(s.overlap, U, &ovlInU));
     PetscCall(GDSWSubmatrix(AU[0], ovlInU, ovlInU, gd->bs, reuse, &s.Aovl));
     PetscCall(ISDestroy(&ovlInU));
     if (reuse == MAT_INITIAL_MATRIX) {
@@ -812,7 +823,7 @@ PetscErrorCode GDSWExtractSubdomainMatrices(PC pc, MatReuse reuse)
     }
     PetscCall(GDSWSubmatrix(s.Aovl, s.nonInOvl, s.nonInOvl, gd->bs, reuse, &s.Anon));
   }
-  PetscCall(MatDestroySubMatrices(1, &AU));
+  if (!sequential) PetscCall(MatDestroySubMatrices(1, &AU));
   PetscCall(ISDestroy(&isU));
   PetscFunctionReturn(0);
 }
