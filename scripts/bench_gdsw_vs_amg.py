@@ -16,8 +16,11 @@ CG to rtol 1e-8 in the unpreconditioned norm, zero initial guess. Per run: itera
 (PCSetUp) and solve (KSPSolve) time from -log_view (max over ranks), peak memory (sum over ranks);
 each command runs --repeat times (default 3) back to back and the row holds the median time.
 Writes bench/results/gdsw_vs_amg.{csv,cmd,png}.
-Usage: scripts/bench_gdsw_vs_amg.py [--quick] [--repeat N] [--only PROBLEM,...] [--plot]
-(--quick: small sizes, one run each, files in /tmp; --plot redraws the PNG from the CSV)
+Usage: scripts/bench_gdsw_vs_amg.py [--quick] [--repeat N] [--only PROBLEM,...] [--hugepages] [--plot]
+(--quick: small sizes, one run each, files in /tmp; --plot redraws the PNG from the CSV;
+--hugepages: every run with glibc's GLIBC_TUNABLES=glibc.malloc.hugetlb=1, so that malloc takes
+transparent huge pages where the kernel gives them only on request, as Debian's does; files
+gdsw_vs_amg_hugepages.*)
 The build directory is $GDSW_BUILD (default <top>/build)."""
 import csv
 import os
@@ -35,6 +38,8 @@ ELASTICITY = os.path.join(build, "pc_gdsw", "gdsw_elasticity")
 LIB = os.path.join(build, "pc_gdsw", "libpetscgdsw.so")
 quick = "--quick" in sys.argv
 results = "/tmp/gdsw_vs_amg_quick" if quick else os.path.join(top, "bench", "results")
+hugepages = "--hugepages" in sys.argv
+OUTNAME = "gdsw_vs_amg_hugepages" if hugepages else "gdsw_vs_amg"
 repeat = 1 if quick else int(sys.argv[sys.argv.index("--repeat") + 1]) if "--repeat" in sys.argv else 3
 
 KRYLOV = "-ksp_type cg -ksp_rtol 1e-8 -ksp_norm_type unpreconditioned -ksp_max_it 3000"
@@ -93,7 +98,7 @@ def problems():
 
 def main():
     if "--plot" in sys.argv:
-        plot(list(csv.DictReader(open(os.path.join(results, "gdsw_vs_amg.csv")))))
+        plot(list(csv.DictReader(open(os.path.join(results, OUTNAME + ".csv")))))
         return
     os.makedirs(results, exist_ok=True)
     only = sys.argv[sys.argv.index("--only") + 1].split(",") if "--only" in sys.argv else None
@@ -105,6 +110,8 @@ def main():
             # the AMGs take no MATIS: ex71 assembles the same matrix as AIJ for them
             aij = " -dm_mat_type aij" if name.startswith("ex71") and method in AMG else ""
             cmd = f"{base}{aij} {KRYLOV} {METHODS[method]} {MEASURE}"
+            if hugepages:
+                cmd = cmd.replace("mpiexec ", "mpiexec -x GLIBC_TUNABLES=glibc.malloc.hugetlb=1 ", 1)
             runs = [measure_solve(cmd, 900) for _ in range(repeat)]
             ok = [r for r in runs if r["status"] == "ok"]
             row = dict(runs[0] if not ok else min(ok, key=lambda r: abs(r["total_s"] - statistics.median(x["total_s"] for x in ok))))
@@ -118,11 +125,11 @@ def main():
                   f"solve {row['solve_s']:8.3f} total {row['total_s']:8.3f} mem {row['memory_MB']!s:>6} MB", flush=True)
             rows.append(row)
             cmds.append(cmd)
-    out = os.path.join(results, "gdsw_vs_amg")
+    out = os.path.join(results, OUTNAME)
     if only and os.path.exists(out + ".csv"):  # the other problems' rows and commands stay as they were
         ran = {r["problem"] for r in rows}
         old = [r for r in csv.DictReader(open(out + ".csv")) if r["problem"] not in ran]
-        bases = [portable(base) + " " for name, _, base, _ in problems() if name in ran]
+        bases = [portable(base) + " " for p, _, base, _ in problems() if p in ran]
         oldcmds = [c for c in open(out + ".cmd").read().splitlines() if not c.startswith("#") and not any(c.startswith(b) for b in bases)]
         rows, cmds = old + rows, oldcmds + cmds
     for r in rows:
@@ -160,7 +167,7 @@ def plot(rows):
     axes.flat[0].legend(fontsize=7)
     fig.suptitle("PCSetUp + KSPSolve, CG to 1e-8 (unpreconditioned norm)", fontsize=10)
     fig.tight_layout()
-    fig.savefig(os.path.join(results, "gdsw_vs_amg.png"), dpi=110)
+    fig.savefig(os.path.join(results, OUTNAME + ".png"), dpi=110)
 
 
 if __name__ == "__main__":
