@@ -31,6 +31,17 @@ static PetscErrorCode CreateMesh(const Scene &sc, const Blocks &b, DM *dm)
   for (const auto &g : groups)
     if (!g.empty() && g != "boundary" && std::find(required.begin(), required.end(), g) == required.end()) required.push_back(g); /* "boundary" is made below */
   PetscCall(LoadMesh(PETSC_COMM_WORLD, sc.mesh, required, regions, dm));
+  if (sc.refine > 0) { /* each refinement makes 8 tetrahedra of one; a tetrahedral mesh has about 4.3 points (cells, faces, edges, vertices) per cell */
+    PetscInt  cStart, cEnd;
+    PetscReal cells, fine;
+    PetscCall(DMPlexGetHeightStratum(*dm, 0, &cStart, &cEnd));
+    PetscReal local = (PetscReal)(cEnd - cStart);
+    PetscCallMPI(MPIU_Allreduce(&local, &cells, 1, MPIU_REAL, MPIU_SUM, PETSC_COMM_WORLD));
+    fine = cells * PetscPowReal(8.0, (PetscReal)sc.refine);
+    PetscCheck(4.3 * fine <= (PetscReal)PETSC_MAX_INT, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
+               "-refine %" PetscInt_FMT ": the mesh's %.0f cells would become %.3g (each refinement multiplies them by 8), more than PETSc's %d-bit indices can number (about %.3g cells); refine less, or start from a finer mesh file",
+               sc.refine, (double)cells, (double)fine, (int)(8 * sizeof(PetscInt)), (double)PETSC_MAX_INT / 4.3);
+  }
   for (PetscInt k = 0; k < sc.refine; k++) {
     DM fine;
     PetscCall(DMRefine(*dm, PETSC_COMM_WORLD, &fine));

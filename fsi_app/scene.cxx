@@ -127,10 +127,34 @@ struct OptionReader {
     Record(name, role, *v ? "true" : "false");
     PetscFunctionReturn(0);
   }
+  /* A value that is not one of the n names of list stops the run with one message: PETSc's own
+     parsers raise it on every rank. */
+  PetscErrorCode CheckChoice(const char *name, const char *const *list, PetscInt n) const
+  {
+    char      value[256];
+    PetscBool given, known = PETSC_FALSE;
+
+    PetscFunctionBegin;
+    PetscCall(PetscOptionsGetString(PetscOptionsObject->options, PetscOptionsObject->prefix, name, value, sizeof(value), &given));
+    if (!given) PetscFunctionReturn(0);
+    std::string names;
+    for (PetscInt i = 0; i < n; i++) {
+      PetscBool same;
+      PetscCall(PetscStrcasecmp(value, list[i], &same));
+      known = (PetscBool)(known || same);
+      names += (i ? ", " : "") + std::string(list[i]);
+    }
+    PetscCheck(known, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not one of: %s", name, value, names.c_str());
+    PetscFunctionReturn(0);
+  }
   template <class E>
   PetscErrorCode Enum(const char *name, const char *text, const char *const *list, E *v, OptionRole role) const
   {
+    PetscInt n = 0;
+
     PetscFunctionBegin;
+    while (list[n + 2]) n++; /* PETSc's enum lists end with the type name, the prefix and a null */
+    PetscCall(CheckChoice(name, list, n));
     PetscCall(PetscOptionsEnum(name, text, nullptr, list, (PetscEnum)*v, (PetscEnum *)v, nullptr));
     Record(name, role, list[*v]);
     PetscFunctionReturn(0);
@@ -214,6 +238,7 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(opt.Real("-structure_density", "density of the wall (g/cm^3)", &sc.rho, Positive, PROBLEM));
   PetscCall(opt.Int("-structure_degree", "polynomial degree of the displacement", &sc.degree, Range{1, 3}, PROBLEM));
   PetscCall(opt.Int("-structure_subdomains", "GDSW subdomains per rank (METIS on the rank's cells)", &sc.subdomains, AtLeast(1), RUN));
+  PetscCall(opt.CheckChoice("-structure_pc_setup", SplitSetUpNames, 3));
   PetscCall(PetscOptionsEList("-structure_pc_setup", "when the structure split's preconditioner is rebuilt (default: once for a linear wall, every time step otherwise)", nullptr, SplitSetUpNames, 3, sc.pcSetUp < 0 ? "auto" : SplitSetUpNames[sc.pcSetUp], &sc.pcSetUp, nullptr));
   PetscCall(opt.String("-fluid_region", "physical group of the fluid's cells", sc.fluidRegion, sizeof(sc.fluidRegion), PROBLEM));
   PetscCall(opt.String("-fluid_noslip", "groups of faces where the velocity is zero, comma separated", sc.noslip, sizeof(sc.noslip), PROBLEM));
@@ -224,9 +249,10 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(opt.Reals("-fluid_inflow_velocity", "prescribed velocity ux,uy,uz on the faces of -fluid_inlet (cm/s; no-slip groups keep u = 0 on their nodes)", sc.inflowVelocity, &n, &sc.inflow, Any, PROBLEM));
   PetscCheck(!sc.inflow || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_inflow_velocity: give ux,uy,uz (got %" PetscInt_FMT " values)", n);
   for (auto probe : {std::make_pair("-structure_probes", &sc.structureProbes), std::make_pair("-fluid_probes", &sc.fluidProbes)}) {
-    PetscReal xyz[60] = {0};
-    n = 60;
+    PetscReal xyz[63] = {0}; /* room for a 21st point: PETSc drops values beyond the array silently */
+    n = 63;
     PetscCall(opt.Reals(probe.first, probe.second == &sc.fluidProbes ? "points x1,y1,z1,x2,... (at most 20, reference configuration) where the pressure is recorded every step (in the run report); with -fluid_inlet_pressure, when the pulse's front (half its pressure) passes each and the wave speed" : "points x1,y1,z1,x2,... (at most 20, reference configuration) where the wall's displacement is recorded every step (in the run report)", xyz, &n, &set, Any, RUN));
+    PetscCheck(!set || n <= 60, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "%s: at most 20 points (got more than 20)", probe.first);
     PetscCheck(!set || (n > 0 && n % 3 == 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s: give x,y,z for each point (got %" PetscInt_FMT " values)", probe.first, n);
     if (set) probe.second->assign(xyz, xyz + n);
   }
@@ -244,7 +270,7 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(opt.Real("-dt", "time step (s); 0 solves the static problem", &sc.dt, NonNegative, RUN)); /* the checkpoint's header compares it */
   PetscCall(opt.Real("-t_final", "end time (s), a whole number of steps", &sc.tFinal, NonNegative, RUN));
   PetscCall(opt.Enum("-time_scheme", "differences in time for the inertia", TimeSchemeNames, &sc.scheme, RUN));
-  PetscCall(opt.Int("-structure_load_steps", "apply the load in this many equal increments (statics)", &sc.loadSteps, AtLeast(1), RUN));
+  PetscCall(opt.Int("-structure_load_steps", "apply the load in this many equal increments (statics)", &sc.loadSteps, Range{1, 10000}, RUN));
   PetscCall(opt.Int("-max_step_cuts", "a failed step (Newton diverged, element inverted) is halved up to this many times before the run stops", &sc.maxCuts, Range{0, 20}, RUN));
   PetscCall(opt.Bool("-mms", "manufactured solution d = a sin(pi x)sin(pi y)sin(pi z)(1,1,1) on the unit cube", &sc.mms, PROBLEM));
   PetscCall(opt.Real("-mms_amplitude", "the amplitude a of the manufactured solution", &sc.mmsAmplitude, Any, PROBLEM));

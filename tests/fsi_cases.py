@@ -1351,6 +1351,34 @@ def fsi_restart_output():
 
 
 @case
+def option_faults():
+    """Option values a new user mistypes stop the run before the first step with one sentence,
+    printed once on 2 ranks: a choice that is not one of the list (PETSc's own parsers print it
+    on every rank), more probes than the 20 a run records (the rest were dropped silently), a
+    number of load increments no static solve needs, a refinement whose mesh 32-bit indices
+    cannot number (it ran out of memory in DMRefine); and a probe that the pulse's front has not
+    reached by the end of the run is said to be so (it printed "arrives at t -1")."""
+    probes21 = ",".join(f"0.09,0,{0.1 * i:g}" for i in range(21))
+    cases = ((["-time_scheme", "bogus"], "-time_scheme bogus is not one of: backward_euler, bdf2"),
+             (["-structure_pc_setup", "sometimes"], "-structure_pc_setup sometimes is not one of: every_newton, every_step, once"),
+             (["-material", "rubber"], "-material rubber is not one of:"),
+             (["-structure_probes", probes21], "-structure_probes: at most 20 points (got more than 20)"),
+             (["-fluid_probes", probes21], "-fluid_probes: at most 20 points (got more than 20)"),
+             (["-structure_load_steps", 100000000], "-structure_load_steps: value must be in [1, 10000] (got 1e+08)"),
+             # tube1_L0 has 2998 cells: 8^10 times as many is 3.2e12
+             (["-refine", 10], "-refine 10: the mesh's 2998 cells would become 3.22e+12 (each refinement multiplies them by 8)"))
+    for opts, msg in cases:
+        out = run([APP, "-options_file", FSI] + [str(o) for o in opts], 2, fail=True)
+        assert out.count(msg) == 1, (msg, out[-2000:])
+        assert "PETSC ERROR: #" not in out.split(msg)[0], out[-2000:]  # the sentence comes first, no other error before it
+    # one step of 0.5 ms: the front (217 cm/s) has not reached z = 0.625 or 2.5
+    out = run([APP, "-options_file", FSI, "-t_final", 5e-4, "-fluid_probes", "0,0,0.625,0,0,2.5"], 2)
+    assert "arrives at t -1" not in out, out[-2000:]
+    for z in ("0.625", "2.5"):
+        assert f"probe (0., 0., {z}): the front (p = 665.) has not arrived by t 5.000000e-04, the end of the run" in out, out[-2000:]
+
+
+@case
 def fsi_bad_input():
     """A mesh without an interface group, an interface group that is not between the fluid
     and the wall, a no-slip interface, a static coupled run, an incomplete or unknown block

@@ -160,7 +160,8 @@ static PetscErrorCode ReportArrivals(const Probes &probes, PetscReal level, RunR
   for (size_t i = 0; i < arrival.size(); i++) {
     const PetscReal *X = &probes.X[3 * i];
     const PetscReal  s = PetscSqrtReal(PetscSqr(X[0] - probes.X[0]) + PetscSqr(X[1] - probes.X[1]) + PetscSqr(X[2] - probes.X[2]));
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "probe (%g, %g, %g): the front (p = %g) arrives at t %.6e\n", (double)X[0], (double)X[1], (double)X[2], (double)level, (double)arrival[i]));
+    if (arrival[i] >= 0) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "probe (%g, %g, %g): the front (p = %g) arrives at t %.6e\n", (double)X[0], (double)X[1], (double)X[2], (double)level, (double)arrival[i]));
+    else PetscCall(PetscPrintf(PETSC_COMM_WORLD, "probe (%g, %g, %g): the front (p = %g) has not arrived by t %.6e, the end of the run\n", (double)X[0], (double)X[1], (double)X[2], (double)level, probes.t.empty() ? 0.0 : (double)probes.t.back()));
     report.results.push_back({"arrival_" + std::to_string(i), arrival[i]});
     if (arrival[i] < 0) continue;
     st += arrival[i], ss += s, stt += arrival[i] * arrival[i], sts += arrival[i] * s, m++;
