@@ -6,6 +6,7 @@ static const char help[] = "fsi_app: monolithic fluid-structure interaction on P
                            "Scenes are options files: -options_file scenes/X.opts\n";
 
 #include "io/checkpoint.h"
+#include "io/files.h"
 #include "io/report.h"
 #include "io/xdmf.h"
 #include "mesh/mesh.h"
@@ -21,7 +22,8 @@ using namespace fsi;
    region, refined; a label "boundary" on its boundary faces (the manufactured solutions'). */
 static PetscErrorCode CreateMesh(const Scene &sc, const Blocks &b, DM *dm)
 {
-  std::vector<std::string> groups, required, regions;
+  std::vector<GroupUse>    groups, required;
+  std::vector<std::string> regions;
 
   PetscFunctionBegin;
   for (const Block *blk : b.list) {
@@ -29,7 +31,7 @@ static PetscErrorCode CreateMesh(const Scene &sc, const Blocks &b, DM *dm)
     if (!blk->Region().empty() && std::find(regions.begin(), regions.end(), blk->Region()) == regions.end()) regions.push_back(blk->Region());
   }
   for (const auto &g : groups)
-    if (!g.empty() && g != "boundary" && std::find(required.begin(), required.end(), g) == required.end()) required.push_back(g); /* "boundary" is made below */
+    if (!g.group.empty() && g.group != "boundary") required.push_back(g); /* "boundary" is made below */
   PetscCall(LoadMesh(PETSC_COMM_WORLD, sc.mesh, required, regions, dm));
   if (sc.refine > 0) { /* each refinement makes 8 tetrahedra of one; a tetrahedral mesh has about 4.3 points (cells, faces, edges, vertices) per cell */
     PetscInt  cStart, cEnd;
@@ -197,6 +199,7 @@ int main(int argc, char **argv)
   PetscCall(PCRegisterFaCSIFluid());
   PetscCall(PhasesBegin());
   PetscCall(ReadScene(sc));
+  if (sc.checkpoint[0] || sc.restart[0]) PetscCall(FileDigest(PETSC_COMM_WORLD, sc.mesh, &sc.problem[MeshDigestKey]));
   PetscCall(CreateBlocks(sc, b));
   PetscCall(CreateMesh(sc, b, &dm));
   PetscCall(SetUpBlocks(dm, b));
@@ -221,6 +224,8 @@ int main(int argc, char **argv)
   if (sc.restart[0]) {
     CheckpointHeader c;
     PetscCall(CheckpointRead(sc.restart, dm, sc.problem, c, x, history));
+    PetscCheck(c.step < sc.Steps(), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-restart %s: the checkpoint is at step %" PetscInt_FMT " (t %g) and this run ends at step %" PetscInt_FMT ": nothing is left to do; give a %s beyond it", sc.restart, c.step, (double)c.t, sc.Steps(),
+               dynamic ? "-t_final" : "-structure_load_steps");
     first = report.restartedAt = c.step;
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "restart from %s: step %" PetscInt_FMT " t %.4e\n", sc.restart, c.step, (double)c.t));
   }

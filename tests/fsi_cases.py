@@ -1009,7 +1009,9 @@ def output_paths_bad():
 def restart_bad():
     """A restart from a truncated checkpoint, from a file that is not one, and with other
     boundary conditions (the same number of unknowns) or another modulus: a sentence naming
-    the file and what differs; the same problem with other solver options restarts."""
+    the file and what differs; the same problem with other solver options restarts. A run that
+    ends at or before the checkpoint's step, a checkpoint with one byte changed (its size
+    intact), and a mesh file whose nodes moved under the same name: a sentence each."""
     tmp = tempfile.mkdtemp()
     chk, half = os.path.join(tmp, "c.chk"), os.path.join(tmp, "half.chk")
     base = ["-mesh", os.path.join(MESHES, "cube_L0.msh"), "-structure_pressure_group", "x1", "-structure_pressure", 0.01, "-structure_density", 1,
@@ -1026,6 +1028,29 @@ def restart_bad():
     refused(resume + ["-structure_clamp", "x0", "-E", 2, "-restart", chk], f"-restart {chk}: written with -E 1, this run has -E 2")
     out = run(resume + ["-structure_clamp", "x0", "-restart", chk, "-ksp_type", "cg", "-pc_type", "jacobi", "-ksp_rtol", 1e-10])
     assert "restart from" in out and "step 4/4" in out, out
+    # a run that would end where the checkpoint is, or before (exit 0 with nothing done, before)
+    for t_final, steps in ((0.2, 2), (0.1, 1)):
+        refused([APP] + base + ["-structure_clamp", "x0", "-t_final", t_final, "-restart", chk],
+                f"-restart {chk}: the checkpoint is at step 2 (t 0.2) and this run ends at step {steps}: nothing is left to do; give a -t_final beyond it")
+    # one byte changed in the last stored state, the size unchanged (blamed on Newton, before)
+    damaged = os.path.join(tmp, "damaged.chk")
+    data = bytearray(open(chk, "rb").read())
+    data[-20] ^= 0x40
+    open(damaged, "wb").write(data)
+    refused(resume + ["-structure_clamp", "x0", "-restart", damaged], f"-restart {damaged}: a past state stored in it does not match its checksum: the file was damaged after it was written")
+    # the mesh file changed under the same name: its nodes moved, the unknowns the same (accepted, before)
+    moved = os.path.join(tmp, "cube.msh")
+    shutil.copy(mesh, moved)
+    on_moved = [APP] + [moved if a == mesh else a for a in base] + ["-structure_clamp", "x0"]
+    run(on_moved + ["-t_final", 0.2, "-checkpoint", chk])
+    lines, inside = open(moved).read().split("\n"), False
+    for k, line in enumerate(lines):
+        inside = (inside or line == "$Nodes") and line != "$EndNodes"
+        if inside and len(line.split()) == 3:  # a node's x y z
+            x, y, z = line.split()
+            lines[k] = f"{1.5 * float(x):.17g} {y} {z}"
+    open(moved, "w").write("\n".join(lines))
+    refused(on_moved + ["-t_final", 0.4, "-restart", chk], f"-restart {chk}: the mesh file {moved} has changed since the checkpoint was written (its contents differ)")
     shutil.rmtree(tmp)
 
 
@@ -1376,6 +1401,26 @@ def option_faults():
     assert "arrives at t -1" not in out, out[-2000:]
     for z in ("0.625", "2.5"):
         assert f"probe (0., 0., {z}): the front (p = 665.) has not arrived by t 5.000000e-04, the end of the run" in out, out[-2000:]
+
+
+@case
+def group_faults():
+    """Every option that names a mesh group is checked against what the group holds, and options
+    whose roles exclude each other against naming the same group: a cell group as clamped faces
+    or slip faces, a face group as the wall's region (each ran and exited 0 with nothing
+    clamped, or nothing solved), the fluid's region as the wall's, the inlet as the outlet or a
+    no-slip group as the outlet (each solved another problem and exited 0). One sentence naming
+    both the option and the group, on 2 ranks."""
+    wall = os.path.join(MESHES, "..", "scenes", "wall_tube1_static.opts")
+    cases = ((wall, ["-structure_clamp", "wall"], "-structure_clamp wall: the group holds cells, and the option takes a group of faces"),
+             (wall, ["-structure_region", "outer_wall"], "-structure_region outer_wall: the group holds faces, and the option takes a group of cells"),
+             (FSI, ["-structure_region", "fluid"], "-structure_region fluid and -fluid_region fluid name the same group: the regions of the wall and the fluid must be different groups"),
+             (FSI, ["-geometry_slip", "fluid:z"], "-geometry_slip fluid: the group holds cells, and the option takes a group of faces"),
+             (FSI, ["-fluid_outlet", "inlet"], "-fluid_inlet inlet and -fluid_outlet inlet name the same group: the fluid's inlet, outlet and no-slip faces must be different groups"),
+             (FSI, ["-fluid_noslip", "outlet"], "-fluid_noslip outlet and -fluid_outlet outlet name the same group"))
+    for scene, opts, msg in cases:
+        out = run([APP, "-options_file", scene] + [str(o) for o in opts], 2, fail=True)
+        assert out.count(msg) == 1, (msg, out[-2000:])
 
 
 @case

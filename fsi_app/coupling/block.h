@@ -24,7 +24,7 @@ class CouplingBlock : public Block {
 public:
   CouplingBlock(const Scene &sc, StructureBlock &s, FluidBlock &f, GeometryBlock &g) : sc(sc), structure(s), fluid(f), geometry(g) {}
   const char *Name() const override { return "coupling"; }
-  void        Groups(std::vector<std::string> &groups) const override { groups.push_back(sc.interface); }
+  void        Groups(std::vector<GroupUse> &groups) const override { groups.push_back({sc.interface, "-geometry_interface", 2}); }
 
   PetscErrorCode AddFields(DM dm) override;
   PetscErrorCode AddConditions(DM dm, Conditions &list) override;

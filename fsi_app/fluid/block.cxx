@@ -29,12 +29,14 @@ static PetscErrorCode MMSDirichletFaces(const Scene &sc, DM dm, DMLabel *faces)
   PetscFunctionReturn(0);
 }
 
-void FluidBlock::Groups(std::vector<std::string> &groups) const
+void FluidBlock::Groups(std::vector<GroupUse> &groups) const
 {
-  groups.push_back(sc.fluidRegion);
-  for (const auto &g : SplitList(sc.noslip)) groups.push_back(g.substr(0, g.find(':')));
-  if (sc.inletPressure != 0 || sc.poiseuille[0] > 0 || sc.inflow) groups.push_back(sc.inlet);
-  if (sc.poiseuille[0] > 0 || sc.mms) groups.push_back(sc.outlet);
+  const char *conditions = "fluid's inlet, outlet and no-slip faces";
+  groups.push_back({sc.fluidRegion, "-fluid_region", 3, "regions of the wall and the fluid"});
+  for (const auto &g : SplitList(sc.noslip)) groups.push_back({g.substr(0, g.find(':')), "-fluid_noslip", 2, conditions});
+  if (sc.inletPressure != 0 || sc.poiseuille[0] > 0 || sc.inflow) groups.push_back({sc.inlet, "-fluid_inlet", 2, conditions});
+  if (sc.poiseuille[0] > 0 || sc.mms) groups.push_back({sc.outlet, "-fluid_outlet", 2, conditions});
+  else if (sc.inletPressure != 0 || sc.inflow) groups.push_back({sc.outlet, "-fluid_outlet", 2, conditions, true}); /* stress-free: only its flux is reported */
 }
 
 PetscErrorCode FluidBlock::AddFields(DM dm)

@@ -19,7 +19,7 @@ public:
   /* `geometry`: the block whose d_f moves the mesh (nullptr: a fixed mesh) */
   FluidBlock(const Scene &sc, const GeometryBlock *geometry) : sc(sc), geometry(geometry) {}
   const char *Name() const override { return "fluid"; }
-  void        Groups(std::vector<std::string> &groups) const override;
+  void        Groups(std::vector<GroupUse> &groups) const override;
   std::string Region() const override { return sc.fluidRegion; }
 
   PetscErrorCode AddFields(DM dm) override;

@@ -5,10 +5,11 @@
 
 namespace fsi {
 
-void GeometryBlock::Groups(std::vector<std::string> &groups) const
+void GeometryBlock::Groups(std::vector<GroupUse> &groups) const
 {
-  groups.push_back(sc.fluidRegion), groups.push_back(sc.interface);
-  for (const auto &g : SplitList(sc.slip)) groups.push_back(g.substr(0, g.find(':')));
+  groups.push_back({sc.fluidRegion, "-fluid_region", 3, "regions of the wall and the fluid"});
+  groups.push_back({sc.interface, "-geometry_interface", 2});
+  for (const auto &g : SplitList(sc.slip)) groups.push_back({g.substr(0, g.find(':')), "-geometry_slip", 2});
 }
 
 PetscErrorCode GeometryBlock::AddFields(DM dm)

@@ -20,7 +20,7 @@ public:
   GeometryBlock(const Scene &sc, PetscBool coupled, PetscBool movesFluid) : sc(sc), coupled(coupled), movesFluid(movesFluid) {}
   ~GeometryBlock() override { GeometryPredictorDestroy(predictor); }
   const char *Name() const override { return "geometry"; }
-  void        Groups(std::vector<std::string> &groups) const override;
+  void        Groups(std::vector<GroupUse> &groups) const override;
   std::string Region() const override { return sc.fluidRegion; }
   PetscBool   Coupled() const { return coupled; }
 

@@ -4,13 +4,15 @@
 #include "discretization/conditions.h"
 #include <cstdio>
 #include <sstream>
+#include <vector>
 
 namespace fsi {
 
-static const PetscInt Magic = 0x46534932; /* "FSI2": with the problem's options */
+static const PetscInt Magic = 0x46534933; /* "FSI3": with the problem's options and the states' checksums */
 
 /* header: magic, step, ranks, global size, scheme, past states, length of the problem's text;
-   then t, dt; the text ("-option value" lines); the solution and the past states */
+   then t, dt; the checksums of the states (two reals each, in the order of the states);
+   the text ("-option value" lines); the solution and the past states */
 enum { HEAD_MAGIC, HEAD_STEP, HEAD_RANKS, HEAD_SIZE, HEAD_SCHEME, HEAD_PAST, HEAD_TEXT, HEAD_LEN };
 
 static std::string ProblemText(const std::map<std::string, std::string> &problem)
@@ -25,7 +27,31 @@ static std::string ProblemText(const std::map<std::string, std::string> &problem
 static long long CheckpointBytes(const PetscInt head[HEAD_LEN])
 {
   const long long vec = 2 * sizeof(PetscInt) + (long long)head[HEAD_SIZE] * sizeof(PetscScalar);
-  return HEAD_LEN * sizeof(PetscInt) + 2 * sizeof(PetscReal) + head[HEAD_TEXT] + (1 + head[HEAD_PAST]) * vec;
+  return HEAD_LEN * sizeof(PetscInt) + (2 + 2 * (1 + head[HEAD_PAST])) * sizeof(PetscReal) + head[HEAD_TEXT] + (1 + head[HEAD_PAST]) * vec;
+}
+
+/* What a checkpoint keeps of a state to tell a damaged file: a 64-bit FNV-1a hash of its
+   entries' bytes, rank after rank (the same ranks read it as wrote it, with the same rows:
+   checked), as two 32-bit halves, which reals hold exactly. Norms would not do: their sums
+   are rounded differently as the array's alignment changes. */
+static PetscErrorCode Checksum(Vec v, PetscReal sum[2])
+{
+  const PetscScalar *a;
+  PetscInt           n;
+  PetscMPIInt        size;
+  MPI_Comm           comm = PetscObjectComm((PetscObject)v);
+
+  PetscFunctionBegin;
+  PetscCall(VecGetLocalSize(v, &n));
+  PetscCall(VecGetArrayRead(v, &a));
+  unsigned long long local = Fnv1a(a, (size_t)n * sizeof(PetscScalar), FnvStart);
+  PetscCall(VecRestoreArrayRead(v, &a));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  std::vector<unsigned long long> all(size);
+  PetscCallMPI(MPI_Allgather(&local, 1, MPI_UNSIGNED_LONG_LONG, all.data(), 1, MPI_UNSIGNED_LONG_LONG, comm));
+  const unsigned long long h = Fnv1a(all.data(), all.size() * sizeof(all[0]), FnvStart);
+  sum[0] = (PetscReal)(h >> 32), sum[1] = (PetscReal)(h & 0xffffffffull);
+  PetscFunctionReturn(0);
 }
 
 /* The first option whose value differs from the checkpoint's, as a sentence; "" if none. */
@@ -40,6 +66,8 @@ static std::string ProblemDifference(const char *file, const std::string &writte
   }
   for (const auto &o : problem) {
     const auto t = then.find(o.first);
+    if (o.first == MeshDigestKey && t != then.end() && t->second != o.second)
+      return std::string("-restart ") + file + ": the mesh file " + (problem.count("-mesh") ? problem.at("-mesh") : std::string("")) + " has changed since the checkpoint was written (its contents differ): restart with the mesh of the run that wrote it";
     if (t == then.end()) return std::string("-restart ") + file + ": written without " + o.first + " (by another version of fsi_app); restart from a checkpoint of this version";
     if (t->second != o.second) return std::string("-restart ") + file + ": written with " + o.first + " " + shown(t->second) + ", this run has " + o.first + " " + shown(o.second) + ": a restart continues the problem of the run that wrote it; give the same options";
   }
@@ -52,7 +80,6 @@ PetscErrorCode CheckpointWrite(const char *file, DM dm, const CheckpointHeader &
   PetscMPIInt size, rank;
   PetscInt    N;
   char        tmp[PETSC_MAX_PATH_LEN];
-  Vec         g;
 
   PetscFunctionBegin;
   PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)dm), &size));
@@ -67,16 +94,19 @@ PetscErrorCode CheckpointWrite(const char *file, DM dm, const CheckpointHeader &
   const std::string text           = ProblemText(problem);
   const PetscInt    head[HEAD_LEN] = {Magic, c.step, size, N, h.scheme, (PetscInt)h.past.size(), (PetscInt)text.size()};
   const PetscReal   times[2]       = {c.t, h.dt};
+  std::vector<Vec>  states(1 + h.past.size(), x);
+  std::vector<PetscReal> sums(2 * states.size());
+  for (size_t j = 0; j < h.past.size(); j++) {
+    PetscCall(DMGetGlobalVector(dm, &states[1 + j]));
+    PetscCall(DMLocalToGlobal(dm, h.past[j], INSERT_VALUES, states[1 + j]));
+  }
+  for (size_t j = 0; j < states.size(); j++) PetscCall(Checksum(states[j], &sums[2 * j]));
   PetscCall(PetscViewerBinaryWrite(viewer, head, HEAD_LEN, PETSC_INT));
   PetscCall(PetscViewerBinaryWrite(viewer, times, 2, PETSC_REAL));
+  PetscCall(PetscViewerBinaryWrite(viewer, sums.data(), (PetscInt)sums.size(), PETSC_REAL));
   PetscCall(PetscViewerBinaryWrite(viewer, text.c_str(), (PetscInt)text.size(), PETSC_CHAR));
-  PetscCall(VecView(x, viewer));
-  PetscCall(DMGetGlobalVector(dm, &g));
-  for (Vec past : h.past) {
-    PetscCall(DMLocalToGlobal(dm, past, INSERT_VALUES, g));
-    PetscCall(VecView(g, viewer));
-  }
-  PetscCall(DMRestoreGlobalVector(dm, &g));
+  for (Vec v : states) PetscCall(VecView(v, viewer));
+  for (size_t j = 1; j < states.size(); j++) PetscCall(DMRestoreGlobalVector(dm, &states[j]));
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCheck(rank || std::rename(tmp, file) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename checkpoint %s to %s", tmp, file);
   PetscCallMPI(MPI_Barrier(PetscObjectComm((PetscObject)dm)));
@@ -111,6 +141,8 @@ PetscErrorCode CheckpointRead(const char *file, DM dm, const std::map<std::strin
   PetscCheck(head[HEAD_MAGIC] == Magic, comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: not an fsi_app checkpoint (or one of an older version)", file);
   PetscCheck(bytes == CheckpointBytes(head), comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: %lld bytes where its header announces %lld: the file is truncated or damaged, not a whole checkpoint", file, bytes, CheckpointBytes(head));
   PetscCall(PetscViewerBinaryRead(viewer, times, 2, nullptr, PETSC_REAL));
+  std::vector<PetscReal> sums(2 * (1 + head[HEAD_PAST])), now(2);
+  PetscCall(PetscViewerBinaryRead(viewer, sums.data(), (PetscInt)sums.size(), nullptr, PETSC_REAL));
   text.resize(head[HEAD_TEXT]);
   PetscCall(PetscViewerBinaryRead(viewer, &text[0], head[HEAD_TEXT], nullptr, PETSC_CHAR));
   const std::string differs = ProblemDifference(file, text, problem);
@@ -121,10 +153,19 @@ PetscErrorCode CheckpointRead(const char *file, DM dm, const std::map<std::strin
              TimeSchemeNames[head[HEAD_SCHEME]], head[HEAD_PAST], TimeSchemeNames[h.scheme], h.past.empty() ? "statics" : "dynamics");
   PetscCheck(PetscAbsReal(times[1] - h.dt) <= 1e-12 * PetscAbsReal(h.dt), comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written with step %g, this run has %g", file, (double)times[1], (double)h.dt);
   c.step = head[HEAD_STEP], c.t = times[0];
+  auto intact = [&](Vec v, size_t j) -> PetscErrorCode {
+    PetscFunctionBegin;
+    PetscCall(Checksum(v, now.data()));
+    PetscCheck(now[0] == sums[2 * j] && now[1] == sums[2 * j + 1], comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: %s stored in it does not match its checksum: the file was damaged after it was written", file,
+               j ? "a past state" : "the solution");
+    PetscFunctionReturn(0);
+  };
   PetscCall(VecLoad(x, viewer));
+  PetscCall(intact(x, 0));
   PetscCall(DMGetGlobalVector(dm, &g));
   for (size_t j = 0; j < h.past.size(); j++) { /* x^(n-j) at t - j dt, with its essential values */
     PetscCall(VecLoad(g, viewer));
+    PetscCall(intact(g, 1 + j));
     PetscCall(DMGlobalToLocal(dm, g, INSERT_VALUES, h.past[j]));
     PetscCall(InsertEssentialValues(dm, c.t - j * h.dt, h.past[j]));
   }

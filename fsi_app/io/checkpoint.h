@@ -16,12 +16,17 @@ struct CheckpointHeader {
   PetscReal t    = 0;
 };
 
+/* The key of Scene::problem that holds the mesh file's digest (FileDigest), so that a restart
+   tells a mesh file changed under the same name. */
+inline const char *const MeshDigestKey = "mesh-file-digest";
+
 /* `problem`: the options that define the problem and their values (Scene::problem). */
 PetscErrorCode CheckpointWrite(const char *file, DM dm, const CheckpointHeader &c, const std::map<std::string, std::string> &problem, Vec x, const TimeHistory &h);
 
 /* Errors name the file and what does not match this run: a file that is not a whole
-   checkpoint (truncated: its size is not the one its header announces), the ranks, the
-   unknowns, the time scheme, the step, and the first option of `problem` whose value differs. */
+   checkpoint (truncated: its size is not the one its header announces), a state that does not
+   match its checksum (damaged), the ranks, the unknowns, the time scheme, the step, the mesh
+   file's contents, and the first option of `problem` whose value differs. */
 PetscErrorCode CheckpointRead(const char *file, DM dm, const std::map<std::string, std::string> &problem, CheckpointHeader &c, Vec x, TimeHistory &h);
 
 } // namespace fsi

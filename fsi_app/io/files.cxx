@@ -2,6 +2,7 @@
 #include "files.h"
 #include <sys/stat.h>
 #include <unistd.h>
+#include <cstdio>
 #include <fstream>
 
 namespace fsi {
@@ -59,6 +60,25 @@ PetscErrorCode FileSize(MPI_Comm comm, const std::string &path, long long *bytes
     *bytes = in ? (long long)in.tellg() : -1;
   }
   PetscCallMPI(MPI_Bcast(bytes, 1, MPI_LONG_LONG, 0, comm));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FileDigest(MPI_Comm comm, const std::string &path, std::string *digest)
+{
+  PetscMPIInt        rank;
+  unsigned long long h = FnvStart;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (!rank) {
+    std::ifstream in(path, std::ios::binary);
+    char          buf[1 << 16];
+    while (in.read(buf, sizeof(buf)) || in.gcount() > 0) h = Fnv1a(buf, (size_t)in.gcount(), h);
+  }
+  PetscCallMPI(MPI_Bcast(&h, 1, MPI_UNSIGNED_LONG_LONG, 0, comm));
+  char hex[17];
+  std::snprintf(hex, sizeof(hex), "%016llx", h);
+  *digest = hex;
   PetscFunctionReturn(0);
 }
 

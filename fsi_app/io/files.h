@@ -21,4 +21,16 @@ PetscErrorCode CheckWritable(MPI_Comm comm, const char *option, const std::strin
 /* The size of `path` in bytes as rank 0 sees it; -1 if it cannot be opened. */
 PetscErrorCode FileSize(MPI_Comm comm, const std::string &path, long long *bytes);
 
+/* 64-bit FNV-1a of n bytes, continuing from h (start: FnvStart). */
+inline const unsigned long long FnvStart = 14695981039346656037ull;
+inline unsigned long long Fnv1a(const void *bytes, size_t n, unsigned long long h)
+{
+  for (size_t i = 0; i < n; i++) h = (h ^ ((const unsigned char *)bytes)[i]) * 1099511628211ull;
+  return h;
+}
+
+/* A digest of the bytes of `path` as rank 0 reads them (64-bit FNV-1a, in hex), on every rank:
+   what a checkpoint records of its mesh file. */
+PetscErrorCode FileDigest(MPI_Comm comm, const std::string &path, std::string *digest);
+
 } // namespace fsi

@@ -112,7 +112,7 @@ static PetscErrorCode DistributeWithMetis(DM *dm, const std::vector<std::string>
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vector<std::string> &required, const std::vector<std::string> &regions, DM *dm)
+PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vector<GroupUse> &uses, const std::vector<std::string> &regions, DM *dm)
 {
   PetscBool set;
 
@@ -122,11 +122,18 @@ PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vecto
   if (!set) PetscCall(PetscOptionsSetValue(nullptr, "-dm_plex_gmsh_use_regions", "true")); /* labels named by physical groups */
   PetscCall(DMPlexCreateGmshFromFile(comm, file.c_str(), PETSC_TRUE, dm));
   PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));
-  for (const auto &g : required) {
-    PetscInt n3, n2;
-    PetscCall(CountLabel(*dm, g, 3, &n3));
-    PetscCall(CountLabel(*dm, g, 2, &n2));
-    PetscCheck(n3 + n2 > 0, comm, PETSC_ERR_ARG_WRONG, "mesh file '%s' has no physical group '%s', which this scene needs (the file has: %s)", file.c_str(), g.c_str(), GroupNames(*dm).c_str());
+  static const char *const holds[] = {"", "", "faces", "cells"};
+  for (const auto &u : uses) {
+    PetscInt n[4] = {0};
+    PetscCall(CountLabel(*dm, u.group, 3, &n[3]));
+    PetscCall(CountLabel(*dm, u.group, 2, &n[2]));
+    if (u.optional && n[3] + n[2] == 0) continue;
+    PetscCheck(n[3] + n[2] > 0, comm, PETSC_ERR_ARG_WRONG, "mesh file '%s' has no physical group '%s', which this scene needs (the file has: %s)", file.c_str(), u.group.c_str(), GroupNames(*dm).c_str());
+    PetscCheck(!u.dim || n[u.dim] > 0, comm, PETSC_ERR_ARG_WRONG, "%s %s: the group holds %s, and the option takes a group of %s (the file's groups: %s)", u.option.c_str(), u.group.c_str(), holds[5 - u.dim], holds[u.dim],
+               GroupNames(*dm).c_str());
+    for (const auto &v : uses)
+      PetscCheck(u.role.empty() || u.role != v.role || u.option == v.option || u.group != v.group, comm, PETSC_ERR_ARG_WRONG, "%s %s and %s %s name the same group: the %s must be different groups", u.option.c_str(), u.group.c_str(), v.option.c_str(),
+                 v.group.c_str(), u.role.c_str());
   }
   PetscCall(DistributeWithMetis(dm, regions));
   PetscFunctionReturn(0);

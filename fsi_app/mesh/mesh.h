@@ -9,11 +9,22 @@
 
 namespace fsi {
 
-/* Read `file` (gmsh .msh 4.1 ASCII, checked first by GmshFileProblem), check that every name in
-   `required` is a physical group with at least one entity, and distribute the cells over the
-   ranks of `comm` (METIS on the cell dual graph, balancing the cells of each of `regions` when
-   there are several). Errors name the file, the line or group, and what the file has. */
-PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vector<std::string> &required, const std::vector<std::string> &regions, DM *dm);
+/* A physical group that an option names, and what the option needs of it: cells (dim 3) or
+   faces (dim 2; 0: either). Options of the same nonempty role (the regions, the fluid's boundary
+   conditions) must name different groups. An optional group may be absent from the file. */
+struct GroupUse {
+  std::string group, option;
+  PetscInt    dim      = 0;
+  std::string role     = "";
+  bool        optional = false;
+};
+
+/* Read `file` (gmsh .msh 4.1 ASCII, checked first by GmshFileProblem), check that every group of
+   `uses` exists and holds entities of the dimension its option needs, and that options of one
+   role name different groups, and distribute the cells over the ranks of `comm` (METIS on the
+   cell dual graph, balancing the cells of each of `regions` when there are several). Errors
+   name the file, the line or the option and group, and what the file has. */
+PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vector<GroupUse> &uses, const std::vector<std::string> &regions, DM *dm);
 
 /* Call f(point) for every point of `label` whose value is in `values` (every value if empty). */
 template <class F>

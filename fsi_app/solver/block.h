@@ -11,6 +11,7 @@
 #include "discretization/cells.h"
 #include "discretization/conditions.h"
 #include "io/report.h"
+#include "mesh/mesh.h"
 #include "solver/sparsity.h"
 #include "solver/time_history.h"
 #include <petscsnes.h>
@@ -35,9 +36,9 @@ class Block {
 public:
   virtual ~Block() = default;
   virtual const char *Name() const = 0;
-  /* The mesh groups it needs (checked when the mesh is read), and its region ("": none, or
-     the whole mesh): the partition balances the cells of every region. */
-  virtual void        Groups(std::vector<std::string> &groups) const = 0;
+  /* The mesh groups its options name (checked when the mesh is read), and its region ("": none,
+     or the whole mesh): the partition balances the cells of every region. */
+  virtual void        Groups(std::vector<GroupUse> &groups) const = 0;
   virtual std::string Region() const { return ""; }
 
   virtual PetscErrorCode AddFields(DM dm) = 0;

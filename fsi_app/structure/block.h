@@ -15,7 +15,7 @@ class StructureBlock : public Block {
 public:
   explicit StructureBlock(const Scene &sc) : sc(sc) {}
   const char *Name() const override { return "structure"; }
-  void        Groups(std::vector<std::string> &groups) const override;
+  void        Groups(std::vector<GroupUse> &groups) const override;
   std::string Region() const override { return sc.region; }
 
   PetscErrorCode AddFields(DM dm) override;

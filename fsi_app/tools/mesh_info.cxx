@@ -17,10 +17,10 @@ int main(int argc, char **argv)
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-mesh", file, sizeof(file), &flg));
   PetscCheck(flg, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "give the mesh file with -mesh <file.msh>");
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-require", req, sizeof(req), nullptr));
-  std::vector<std::string> required;
+  std::vector<fsi::GroupUse> required;
   for (std::string s = req; !s.empty();) {
     const size_t k = s.find(',');
-    required.push_back(s.substr(0, k));
+    required.push_back({s.substr(0, k), "-require"});
     s = k == std::string::npos ? "" : s.substr(k + 1);
   }
   PetscCall(fsi::LoadMesh(PETSC_COMM_WORLD, file, required, {}, &dm));
