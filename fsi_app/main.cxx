@@ -289,6 +289,7 @@ int main(int argc, char **argv)
   if (sc.report[0]) PetscCall(WriteReport(sc.report, PETSC_COMM_WORLD, report));
 
   if (sc.output[0]) PetscCall(XdmfClose(series));
+  if (sc.output[0]) PetscCall(ReleaseFile(PETSC_COMM_WORLD, sc.output));
   PetscCall(TimeHistoryDestroy(history));
   PetscCall(VecDestroy(&x));
   PetscCall(SNESDestroy(&snes));

@@ -7,6 +7,9 @@ import math
 import os
 import re
 import shutil
+import socket
+import stat
+import subprocess
 import tempfile
 
 from testlib import BUILD, between, case, main, run
@@ -891,14 +894,14 @@ def structure_bad_options():
                       (["-arterial", "1,2"], "-arterial: give all five of c1,eps1,eps2,alpha1,alpha2 (got 2)"),
                       (["-arterial", "1,1,0.5,1,5"], "need c1 > 0, eps1 > 0, eps2 > 1, alpha1 >= 0, alpha2 >= 2"),
                       (["-max_step_cuts", -1], "-max_step_cuts: value must be in [0, 20] (got -1)"),
-                      (["-time_scheme", "bdf3"], "Unknown option bdf3 for -time_scheme. Available options: backward_euler bdf2"),
+                      (["-time_scheme", "bdf3"], "-time_scheme bdf3 is not one of: backward_euler, bdf2"),
                       (["-output", "out.vtk"], "-output out.vtk: name the file <name>.xdmf"),
                       (["-restart", "nothere.chk"], "-restart nothere.chk: no such checkpoint"),
                       (["-nh_mu", -1, "-material", "neohooke"], "-nh_mu: value must be positive (got -1)"),
                       (["-structure_region", "lumen"], "has no physical group 'lumen', which this scene needs"),
                       (["-structure_subdomains", 0], "-structure_subdomains: value must be >= 1 (got 0)"),
                       (["-dt", -1], "-dt: value must be >= 0 (got -1)"),
-                      (["-structure_load_steps", 0], "-structure_load_steps: value must be >= 1 (got 0)"),
+                      (["-structure_load_steps", 0], "-structure_load_steps: value must be in [1, 10000] (got 0)"),
                       (["-structure_clamp", "wall_inlet_ring:w"], "-structure_clamp wall_inlet_ring:w: components are x, y, z"),
                       (["-fluid_density", 0], "-fluid_density: value must be positive (got 0)"),
                       (["-structure_degree", 4], "-structure_degree: value must be in [1, 3] (got 4)"),
@@ -953,8 +956,10 @@ def mesh_bad_files():
     """Damaged copies of cube_L0.msh: an element naming a node that does not exist (a segfault
     in PETSc's reader on 1 rank, a wrong mesh on 2), a block naming an entity that does not
     exist (a segfault), a NaN coordinate (accepted), a file cut short inside $Nodes or $Elements
-    (PETSc's "Insufficient data" without the file's name), the format 2.2: a sentence naming
-    the file and the line, on 1 and 2 ranks."""
+    (PETSc's "Insufficient data" without the file's name), the format 2.2, a coordinate of 1e300
+    (NaN in the assembly), two nodes at one point (a silent crack), a tetrahedron without volume
+    (named by a rank-local cell number): a sentence naming the file and the line or the nodes
+    and element by their tags, on 1 and 2 ranks."""
     tmp = tempfile.mkdtemp()
     text = open(os.path.join(MESHES, "cube_L0.msh")).read()
     lines = text.split("\n")
@@ -975,13 +980,26 @@ def mesh_bad_files():
     n = int(lines[block - 1].split()[3])  # its n tags, then its n coordinate lines
     bad = lines[:block + n] + ["nan " + lines[block + n].split(" ", 1)[1]] + lines[block + n + 1:]
     cases.append((damaged("nan", bad), f"line {block + n + 1}: node {lines[block]} has the coordinate 'nan': coordinates must be finite numbers"))
+    # 1e300 is finite, but a volume of such coordinates is not (NaN in the assembly, before)
+    bad = lines[:block + n] + ["1e300 " + lines[block + n].split(" ", 1)[1]] + lines[block + n + 1:]
+    cases.append((damaged("huge", bad), f"line {block + n + 1}: node {lines[block]} has the coordinate '1e300': coordinates must be at most 1e100 in size"))
+    # a block's second node moved onto its first: two nodes at one point (a silent crack, before)
+    b2 = next(k + 1 for k in range(lines.index("$Nodes") + 1, lines.index("$EndNodes")) if re.match(r"^\d \d+ 0 \d+$", lines[k]) and int(lines[k].split()[3]) >= 2)
+    n2 = int(lines[b2 - 1].split()[3])
+    bad = lines[:b2 + n2 + 1] + [lines[b2 + n2]] + lines[b2 + n2 + 2:]
+    first, second = sorted((int(lines[b2]), int(lines[b2 + 1])))
+    x, y, z = (float(c) for c in lines[b2 + n2].split())
+    cases.append((damaged("twin", bad), f": nodes {first} and {second} are both at ({x:.17g}, {y:.17g}, {z:.17g}): the cells on either side would not be connected there"))
+    # a tetrahedron naming one node twice has no volume (named by a rank-local cell number, before)
+    bad, at = corrupt(lines, "$Elements", (r"^" + tet[0] + " ", lambda l: " ".join(tet[:-1] + [tet[-2]])))
+    cases.append((damaged("flat", bad), f"line {at}: tetrahedron {tet[0]} (nodes {' '.join(tet[1:-1] + [tet[-2]])}) has no volume: its nodes lie in a plane"))
     for section in ("$Nodes", "$Elements"):
         cut = text[:text.index(section) + (text.index("$End" + section[1:]) - text.index(section)) // 2]
         cases.append((damaged("cut" + section[1:], cut.split("\n")), f"ends inside {section} (line {cut.count(chr(10)) + 1}): the file is truncated"))
     cases.append((damaged("v22", ["$MeshFormat", "2.2 0 8"] + lines[2:]), "is gmsh format 2.2: fsi_app reads format 4.1 ASCII"))
     for path, msg in cases:
         for np in (1, 2):
-            refused([APP, "-mesh", path], f"mesh file '{path}' {msg}", np)
+            refused([APP, "-mesh", path], f"mesh file '{path}'{'' if msg.startswith(':') else ' '}{msg}", np)
     shutil.rmtree(tmp)
 
 
@@ -1002,6 +1020,34 @@ def output_paths_bad():
             out = refused([APP] + cube + [opt, path], f"{opt} {path}: the run cannot write this file ({why})", np)
             assert "unknowns:" not in out
     assert os.listdir(tmp) == ["afile"], os.listdir(tmp)
+    shutil.rmtree(tmp)
+
+
+@case
+def output_faults():
+    """Output that would be lost or would destroy something stops the run with a sentence: a
+    checkpoint named after a FIFO (it was replaced by a regular file), a report on a full disk
+    (/dev/full: lost with exit 0), a series another live run is writing (its files were
+    destroyed); a lock left by a run that has ended is taken over, and a finished run leaves none."""
+    tmp = tempfile.mkdtemp()
+    base = [APP, "-mesh", os.path.join(MESHES, "cube_L0.msh"), "-structure_clamp", "x0", "-structure_pressure_group", "x1", "-structure_pressure", 0.01,
+            "-ksp_type", "preonly", "-pc_type", "lu"]
+    fifo = os.path.join(tmp, "fifo")
+    os.mkfifo(fifo)
+    refused(base + ["-checkpoint", fifo], f"-checkpoint {fifo}: the run cannot write this file (it is not a regular file but a device, FIFO or socket, which the run would replace)", 2)
+    assert stat.S_ISFIFO(os.stat(fifo).st_mode)
+    out = run(base + ["-report", "/dev/full"], 2, fail=True)
+    assert out.count("-report /dev/full: writing it failed (No space left on device); the file is incomplete") == 1, out[-2000:]
+    series, h5 = os.path.join(tmp, "s.xdmf"), os.path.join(tmp, "s.h5")
+    open(h5, "w").write("the other run's data")
+    open(series + ".lock", "w").write(f"{socket.gethostname()} {os.getpid()}\n")  # this test's process: alive
+    refused(base + ["-output", series], f"-output {series}: another run (process {os.getpid()}) is writing it", 2)
+    assert open(h5).read() == "the other run's data"
+    ended = subprocess.Popen(["true"])
+    ended.wait()
+    open(series + ".lock", "w").write(f"{socket.gethostname()} {ended.pid}\n")
+    run(base + ["-output", series], 2)
+    assert not os.path.exists(series + ".lock") and os.path.getsize(h5) > 100
     shutil.rmtree(tmp)
 
 

@@ -2,7 +2,11 @@
 #include "files.h"
 #include <sys/stat.h>
 #include <unistd.h>
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <fcntl.h>
 #include <fstream>
 
 namespace fsi {
@@ -24,7 +28,7 @@ PetscErrorCode CheckOnRankZero(MPI_Comm comm, PetscErrorCode code, const std::fu
 }
 
 /* Why `path` cannot be written, or "" if it can. */
-static std::string Unwritable(const std::string &path)
+static std::string Unwritable(const std::string &path, bool regular)
 {
   const size_t      slash = path.find_last_of('/');
   const std::string dir   = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
@@ -35,15 +39,16 @@ static std::string Unwritable(const std::string &path)
   if (!S_ISDIR(st.st_mode)) return dir + " is not a directory";
   if (access(dir.c_str(), W_OK | X_OK) != 0) return "the directory " + dir + " is not writable";
   if (stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) return "it is a directory";
+  if (regular && stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) return "it is not a regular file but a device, FIFO or socket, which the run would replace";
   if (access(path.c_str(), F_OK) == 0 && access(path.c_str(), W_OK) != 0) return "the file is not writable";
   return "";
 }
 
-PetscErrorCode CheckWritable(MPI_Comm comm, const char *option, const std::string &path)
+PetscErrorCode CheckWritable(MPI_Comm comm, const char *option, const std::string &path, bool regular)
 {
   PetscFunctionBegin;
   PetscCall(CheckOnRankZero(comm, PETSC_ERR_FILE_OPEN, [&]() {
-    const std::string why = Unwritable(path);
+    const std::string why = Unwritable(path, regular);
     return why.empty() ? why : std::string(option) + " " + path + ": the run cannot write this file (" + why + ")";
   }));
   PetscFunctionReturn(0);
@@ -79,6 +84,71 @@ PetscErrorCode FileDigest(MPI_Comm comm, const std::string &path, std::string *d
   char hex[17];
   std::snprintf(hex, sizeof(hex), "%016llx", h);
   *digest = hex;
+  PetscFunctionReturn(0);
+}
+
+/* "" if this process may write `path`, else who holds it. */
+static std::string Claim(const std::string &path)
+{
+  const std::string lock = path + ".lock";
+  char              host[256] = "";
+  gethostname(host, sizeof(host) - 1);
+  for (int attempt = 0; attempt < 2; attempt++) {
+    const int fd = open(lock.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
+    if (fd >= 0) {
+      const std::string me = std::string(host) + " " + std::to_string((long)getpid()) + "\n";
+      const bool        ok = write(fd, me.c_str(), me.size()) == (ssize_t)me.size();
+      close(fd);
+      return ok ? "" : "cannot write its lock file " + lock;
+    }
+    if (errno != EEXIST) return "cannot create its lock file " + lock + " (" + std::strerror(errno) + ")";
+    std::ifstream in(lock);
+    std::string   theirHost;
+    long          pid = 0;
+    in >> theirHost >> pid;
+    if (theirHost != host) return "a run on host " + theirHost + " (process " + std::to_string(pid) + ") is writing it; if that run has ended, remove " + lock;
+    if (pid > 0 && (kill((pid_t)pid, 0) == 0 || errno == EPERM)) return "another run (process " + std::to_string(pid) + ") is writing it; give another name, or wait until that run ends (or remove " + lock + " if no run is)";
+    std::remove(lock.c_str()); /* its run ended without removing it */
+  }
+  return "cannot take over its lock file " + lock;
+}
+
+PetscErrorCode ClaimFile(MPI_Comm comm, const char *option, const std::string &path)
+{
+  PetscFunctionBegin;
+  PetscCall(CheckOnRankZero(comm, PETSC_ERR_FILE_OPEN, [&]() {
+    const std::string why = Claim(path);
+    return why.empty() ? why : std::string(option) + " " + path + ": " + why;
+  }));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ReleaseFile(MPI_Comm comm, const std::string &path)
+{
+  PetscMPIInt rank;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (!rank) std::remove((path + ".lock").c_str());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CloseWritten(MPI_Comm comm, const char *option, const char *path, FILE *fp)
+{
+  PetscFunctionBegin;
+  PetscCall(CheckOnRankZero(comm, PETSC_ERR_FILE_WRITE, [&]() {
+    errno   = 0;
+    bool ok = fflush(fp) == 0 && !ferror(fp);
+    if (!ok && !errno) { /* PetscFPrintf() flushes every line and drops the error: one more byte tells why */
+      clearerr(fp);
+      fputc('\n', fp);
+      fflush(fp);
+    }
+    const int e = errno;
+    ok          = fclose(fp) == 0 && ok;
+    if (ok) return std::string();
+    return std::string(option) + " " + path + ": writing it failed (" + std::strerror(e ? e : errno) + "); the file is incomplete";
+  }));
   PetscFunctionReturn(0);
 }
 

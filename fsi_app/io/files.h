@@ -5,6 +5,7 @@
 #pragma once
 
 #include <petscsys.h>
+#include <cstdio>
 #include <functional>
 #include <string>
 
@@ -15,8 +16,19 @@ namespace fsi {
 PetscErrorCode CheckOnRankZero(MPI_Comm comm, PetscErrorCode code, const std::function<std::string()> &check);
 
 /* The run can write `path` (the value of `option`): its directory exists and takes new files,
-   and the file, if it is there, is a writable file. */
-PetscErrorCode CheckWritable(MPI_Comm comm, const char *option, const std::string &path);
+   and the file, if it is there, is a writable file, and a regular one when `regular` (a file the
+   run replaces by renaming, or HDF5's: a device node or FIFO would be replaced or misused). */
+PetscErrorCode CheckWritable(MPI_Comm comm, const char *option, const std::string &path, bool regular = true);
+
+/* Claim `path` for this run: rank 0 creates `path`.lock holding its host and process id, and
+   refuses (a sentence naming `option`) while another live run holds it; a lock whose process
+   has ended is taken over. ReleaseFile removes it. */
+PetscErrorCode ClaimFile(MPI_Comm comm, const char *option, const std::string &path);
+PetscErrorCode ReleaseFile(MPI_Comm comm, const std::string &path);
+
+/* Close a file opened on rank 0 for writing, and stop with a sentence naming `option` and the
+   system's reason if anything written to it was lost (a full disk: /dev/full). */
+PetscErrorCode CloseWritten(MPI_Comm comm, const char *option, const char *path, FILE *fp);
 
 /* The size of `path` in bytes as rank 0 sees it; -1 if it cannot be opened. */
 PetscErrorCode FileSize(MPI_Comm comm, const std::string &path, long long *bytes);

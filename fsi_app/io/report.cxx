@@ -1,5 +1,9 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "report.h"
+#include "files.h"
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <sys/resource.h>
 
 namespace fsi {
@@ -58,10 +62,12 @@ PetscErrorCode PhasesMeasure(MPI_Comm comm, double total, const std::vector<std:
 
 PetscErrorCode WriteReport(const char *file, MPI_Comm comm, const RunReport &r)
 {
-  FILE *fp;
+  FILE       *fp = nullptr; /* rank 0's; PetscFPrintf() writes there only */
+  PetscMPIInt rank;
 
   PetscFunctionBegin;
-  PetscCall(PetscFOpen(comm, file, "w", &fp));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(CheckOnRankZero(comm, PETSC_ERR_FILE_OPEN, [&]() { return (fp = std::fopen(file, "w")) ? std::string() : std::string("-report ") + file + ": cannot open it for writing (" + std::strerror(errno) + ")"; }));
   PetscCall(PetscFPrintf(comm, fp, "{\n  \"unknowns\": {"));
   for (size_t k = 0; k < r.unknowns.size(); k++) PetscCall(PetscFPrintf(comm, fp, "%s\"%s\": %" PetscInt_FMT, k ? ", " : "", r.unknowns[k].first.c_str(), r.unknowns[k].second));
   PetscCall(PetscFPrintf(comm, fp, "},\n  \"unknowns_per_rank\": {"));
@@ -96,7 +102,7 @@ PetscErrorCode WriteReport(const char *file, MPI_Comm comm, const RunReport &r)
   PetscCall(PetscFPrintf(comm, fp, "\n  ],\n  \"seconds\": {\"assembly\": %.4f, \"preconditioner_setup\": %.4f, \"krylov\": %.4f, \"total\": %.4f", p.assembly, p.setup, p.krylov, p.total));
   for (const auto &s : p.splitSetUp) PetscCall(PetscFPrintf(comm, fp, ", \"setup_%s\": %.4f", s.first.c_str(), s.second));
   PetscCall(PetscFPrintf(comm, fp, "},\n  \"peak_memory_mib\": %.1f\n}\n", p.peakMiB));
-  PetscCall(PetscFClose(comm, fp));
+  PetscCall(CloseWritten(comm, "-report", file, fp));
   PetscFunctionReturn(0);
 }
 

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "gmsh_file.h"
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <map>
 #include <set>
+#include <tuple>
 #include <vector>
 
 namespace fsi {
@@ -37,6 +40,7 @@ struct GmshScan {
   bool                                      hasEntities = false;
   long long                                 nodeMin = 1, tetrahedra = 0;
   std::vector<bool>                         node; /* node[tag - nodeMin]: defined in $Nodes */
+  std::vector<double>                       xyz;  /* its coordinates, 3 per tag */
 
   explicit GmshScan(const std::string &f) : file(f), in(f) { }
 
@@ -74,6 +78,19 @@ struct GmshScan {
     return At("the block names the entity " + std::to_string(tag) + " of dimension " + std::to_string(dim) + ", which $Entities does not define");
   }
   bool Defined(long long tag) const { return tag >= nodeMin && tag - nodeMin < (long long)node.size() && node[tag - nodeMin]; }
+  /* |6 volume| of the tetrahedron with these node tags at most 1e-12 of its longest edge cubed */
+  bool Flat(const long long *t) const
+  {
+    const double *p[4];
+    double        e[3][3], longest = 0;
+    for (int k = 0; k < 4; k++) p[k] = &xyz[3 * (t[k] - nodeMin)];
+    for (int k = 0; k < 3; k++)
+      for (int c = 0; c < 3; c++) e[k][c] = p[k + 1][c] - p[0][c];
+    for (int a = 0; a < 4; a++)
+      for (int b = a + 1; b < 4; b++) longest = std::max(longest, std::hypot(p[a][0] - p[b][0], p[a][1] - p[b][1], p[a][2] - p[b][2]));
+    const double vol6 = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) + e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+    return std::fabs(vol6) <= 1e-12 * longest * longest * longest;
+  }
 
   std::string Format();
   std::string Entities();
@@ -114,7 +131,7 @@ std::string GmshScan::Nodes()
   if (!Integers(4, h) || h[0] < 0 || h[1] < 0) return At("the $Nodes header must be: numEntityBlocks numNodes minNodeTag maxNodeTag");
   if (h[1] && (h[2] < 1 || h[3] < h[2] || h[3] - h[2] >= (1LL << 31))) return At("node tags " + std::to_string(h[2]) + " to " + std::to_string(h[3]) + ": tags are positive and span less than 2^31");
   const long long blocks = h[0], total = h[1];
-  nodeMin = h[2], node.assign(total ? h[3] - h[2] + 1 : 0, false);
+  nodeMin = h[2], node.assign(total ? h[3] - h[2] + 1 : 0, false), xyz.assign(3 * node.size(), 0.0);
   for (long long b = 0; b < blocks; b++) {
     if (!Next()) return Cut();
     if (!Integers(4, h) || h[3] < 0) return At("a node block starts with: entityDim entityTag parametric numNodesInBlock");
@@ -132,12 +149,29 @@ std::string GmshScan::Nodes()
       double x;
       if (!Next()) return Cut();
       if ((long long)tok.size() != values) return At("node " + std::to_string(tags[i]) + ": expected " + std::to_string(values) + " coordinates, found " + std::to_string(tok.size()));
-      for (const std::string &c : tok)
-        if (!Real(c, x) || !std::isfinite(x)) return At("node " + std::to_string(tags[i]) + " has the coordinate '" + c + "': coordinates must be finite numbers");
+      for (size_t c = 0; c < tok.size(); c++) {
+        if (!Real(tok[c], x) || !std::isfinite(x)) return At("node " + std::to_string(tags[i]) + " has the coordinate '" + tok[c] + "': coordinates must be finite numbers");
+        /* a cell's volume is a product of three coordinate differences: beyond 1e100 it overflows */
+        if (std::fabs(x) > 1e100) return At("node " + std::to_string(tags[i]) + " has the coordinate '" + tok[c] + "': coordinates must be at most 1e100 in size (volumes of larger ones overflow); rescale the mesh's units");
+        if (c < 3) xyz[3 * (tags[i] - nodeMin) + c] = x;
+      }
     }
     if ((seen += n) > total) return At("the node blocks hold more nodes than the $Nodes header announces (" + std::to_string(total) + ")");
   }
   if (seen != total) return At("the $Nodes header announces " + std::to_string(total) + " nodes, its blocks hold " + std::to_string(seen));
+  /* two nodes at one point: the cells on either side are not connected there (a crack) */
+  std::vector<long long> order;
+  for (long long k = 0; k < (long long)node.size(); k++)
+    if (node[k]) order.push_back(k);
+  auto point = [&](long long k) { return std::make_tuple(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]); };
+  std::sort(order.begin(), order.end(), [&](long long a, long long b) { return point(a) < point(b); });
+  for (size_t k = 1; k < order.size(); k++)
+    if (point(order[k]) == point(order[k - 1])) {
+      char where[96];
+      std::snprintf(where, sizeof(where), "(%.17g, %.17g, %.17g)", xyz[3 * order[k]], xyz[3 * order[k] + 1], xyz[3 * order[k] + 2]);
+      return "mesh file '" + file + "': nodes " + std::to_string(std::min(order[k], order[k - 1]) + nodeMin) + " and " + std::to_string(std::max(order[k], order[k - 1]) + nodeMin) + " are both at " + where +
+             ": the cells on either side would not be connected there (a crack); merge them (gmsh: Coherence Mesh)";
+    }
   return End("$EndNodes");
 }
 
@@ -161,6 +195,7 @@ std::string GmshScan::Elements()
       if (!Integers(1 + type->second, e) || tok.size() != 1 + type->second) return At("expected an element tag and its " + std::to_string(type->second) + " nodes, found '" + line + "'");
       for (size_t k = 1; k <= type->second; k++)
         if (!Defined(e[k])) return At("element " + tok[0] + " names node " + tok[k] + ", which $Nodes does not define");
+      if (h[2] == 4 && Flat(&e[1])) return At("tetrahedron " + tok[0] + " (nodes " + tok[1] + " " + tok[2] + " " + tok[3] + " " + tok[4] + ") has no volume: its nodes lie in a plane");
     }
     if ((seen += h[3]) > total) return At("the element blocks hold more elements than the $Elements header announces (" + std::to_string(total) + ")");
   }
