@@ -30,8 +30,8 @@ static PetscErrorCode CreateMesh(const Scene &sc, const Blocks &b, DM *dm)
     blk->Groups(groups);
     if (!blk->Region().empty() && std::find(regions.begin(), regions.end(), blk->Region()) == regions.end()) regions.push_back(blk->Region());
   }
-  for (const auto &g : groups)
-    if (!g.group.empty() && g.group != "boundary") required.push_back(g); /* "boundary" is made below */
+  for (const auto &g : groups) /* "boundary" is made below; a group named by the same option twice is checked once */
+    if (!g.group.empty() && g.group != "boundary" && std::none_of(required.begin(), required.end(), [&](const GroupUse &r) { return r.group == g.group && r.option == g.option; })) required.push_back(g);
   PetscCall(LoadMesh(PETSC_COMM_WORLD, sc.mesh, required, regions, dm));
   if (sc.refine > 0) { /* each refinement makes 8 tetrahedra of one; a tetrahedral mesh has about 4.3 points (cells, faces, edges, vertices) per cell */
     PetscInt  cStart, cEnd;

@@ -32,11 +32,12 @@ static PetscErrorCode MMSDirichletFaces(const Scene &sc, DM dm, DMLabel *faces)
 void FluidBlock::Groups(std::vector<GroupUse> &groups) const
 {
   const char *conditions = "fluid's inlet, outlet and no-slip faces";
-  groups.push_back({sc.fluidRegion, "-fluid_region", 3, "regions of the wall and the fluid"});
+  groups.push_back({sc.fluidRegion, "-fluid_region", 3, RegionsRole});
   for (const auto &g : SplitList(sc.noslip)) groups.push_back({g.substr(0, g.find(':')), "-fluid_noslip", 2, conditions});
   if (sc.inletPressure != 0 || sc.poiseuille[0] > 0 || sc.inflow) groups.push_back({sc.inlet, "-fluid_inlet", 2, conditions});
-  if (sc.poiseuille[0] > 0 || sc.mms) groups.push_back({sc.outlet, "-fluid_outlet", 2, conditions});
-  else if (sc.inletPressure != 0 || sc.inflow) groups.push_back({sc.outlet, "-fluid_outlet", 2, conditions, true}); /* stress-free: only its flux is reported */
+  /* the outlet's conditions need it; a stress-free outlet under a pressure or inflow only has its flux reported */
+  const bool outletNeeded = sc.poiseuille[0] > 0 || sc.mms;
+  if (outletNeeded || sc.inletPressure != 0 || sc.inflow) groups.push_back({sc.outlet, "-fluid_outlet", 2, conditions, !outletNeeded});
 }
 
 PetscErrorCode FluidBlock::AddFields(DM dm)

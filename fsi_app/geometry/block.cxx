@@ -7,7 +7,7 @@ namespace fsi {
 
 void GeometryBlock::Groups(std::vector<GroupUse> &groups) const
 {
-  groups.push_back({sc.fluidRegion, "-fluid_region", 3, "regions of the wall and the fluid"});
+  groups.push_back({sc.fluidRegion, "-fluid_region", 3, RegionsRole});
   groups.push_back({sc.interface, "-geometry_interface", 2});
   for (const auto &g : SplitList(sc.slip)) groups.push_back({g.substr(0, g.find(':')), "-geometry_slip", 2});
 }

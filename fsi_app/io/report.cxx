@@ -62,11 +62,9 @@ PetscErrorCode PhasesMeasure(MPI_Comm comm, double total, const std::vector<std:
 
 PetscErrorCode WriteReport(const char *file, MPI_Comm comm, const RunReport &r)
 {
-  FILE       *fp = nullptr; /* rank 0's; PetscFPrintf() writes there only */
-  PetscMPIInt rank;
+  FILE *fp = nullptr; /* rank 0's; PetscFPrintf() writes there only */
 
   PetscFunctionBegin;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(CheckOnRankZero(comm, PETSC_ERR_FILE_OPEN, [&]() { return (fp = std::fopen(file, "w")) ? std::string() : std::string("-report ") + file + ": cannot open it for writing (" + std::strerror(errno) + ")"; }));
   PetscCall(PetscFPrintf(comm, fp, "{\n  \"unknowns\": {"));
   for (size_t k = 0; k < r.unknowns.size(); k++) PetscCall(PetscFPrintf(comm, fp, "%s\"%s\": %" PetscInt_FMT, k ? ", " : "", r.unknowns[k].first.c_str(), r.unknowns[k].second));

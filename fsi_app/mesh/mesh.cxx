@@ -129,7 +129,7 @@ PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vecto
     PetscCall(CountLabel(*dm, u.group, 2, &n[2]));
     if (u.optional && n[3] + n[2] == 0) continue;
     PetscCheck(n[3] + n[2] > 0, comm, PETSC_ERR_ARG_WRONG, "mesh file '%s' has no physical group '%s', which this scene needs (the file has: %s)", file.c_str(), u.group.c_str(), GroupNames(*dm).c_str());
-    PetscCheck(!u.dim || n[u.dim] > 0, comm, PETSC_ERR_ARG_WRONG, "%s %s: the group holds %s, and the option takes a group of %s (the file's groups: %s)", u.option.c_str(), u.group.c_str(), holds[5 - u.dim], holds[u.dim],
+    PetscCheck(!u.dim || n[u.dim] > 0, comm, PETSC_ERR_ARG_WRONG, "%s %s: the group holds %s, and the option takes a group of %s (the file's groups: %s)", u.option.c_str(), u.group.c_str(), holds[u.dim == 2 ? 3 : 2], holds[u.dim],
                GroupNames(*dm).c_str());
     for (const auto &v : uses)
       PetscCheck(u.role.empty() || u.role != v.role || u.option == v.option || u.group != v.group, comm, PETSC_ERR_ARG_WRONG, "%s %s and %s %s name the same group: the %s must be different groups", u.option.c_str(), u.group.c_str(), v.option.c_str(),

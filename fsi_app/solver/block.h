@@ -32,6 +32,9 @@ struct OutputPart {
   std::vector<std::pair<std::string, PetscInt>> fields;
 };
 
+/* The role of -structure_region and -fluid_region (GroupUse): the two must be different groups. */
+inline const char *const RegionsRole = "regions of the wall and the fluid";
+
 class Block {
 public:
   virtual ~Block() = default;

@@ -10,7 +10,7 @@ namespace fsi {
 
 void StructureBlock::Groups(std::vector<GroupUse> &groups) const
 {
-  for (const auto &g : SplitList(sc.region)) groups.push_back({g, "-structure_region", 3, "regions of the wall and the fluid"});
+  for (const auto &g : SplitList(sc.region)) groups.push_back({g, "-structure_region", 3, RegionsRole});
   for (const auto &g : SplitList(sc.clamp)) groups.push_back({g.substr(0, g.find(':')), "-structure_clamp", 2});
   for (const auto &g : SplitList(sc.tractionGroup)) groups.push_back({g, "-structure_traction_group", 2});
   if (sc.pressure != 0) groups.push_back({sc.loaded, "-structure_pressure_group", 2});
