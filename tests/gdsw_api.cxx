@@ -4,6 +4,7 @@ static const char help[] = "Exercises PCGDSW's API on a nonsymmetric problem: up
                            "  -case transpose  <P^T x, y> = <x, P y> for random x, y; GMRES with KSPSolve and KSPSolveTranspose\n"
                            "  -case coarse_exact  |P A Phi c - Phi c| / |Phi c| and |P^T A^T Phi c - Phi c| / |Phi c| for random c\n"
                            "  -case setters    a solve, then the setter named by -set changes its parameter, and a second solve\n"
+                           "  -case threads    the process's threads and OpenMP max-active-levels (set to 2) before and after the set-up\n"
                            "  -set <overlap>   subdomains (4 per rank), repartition (true), subdomain_size (200), overlap (2),\n"
                            "                   coarse_space (none), combination (additive), first_level_type (restricted)\n"
                            "                   or local_solver (incomplete)\n"
@@ -12,6 +13,8 @@ static const char help[] = "Exercises PCGDSW's API on a nonsymmetric problem: up
                            "Every case prints the PC's settings as its getters return them.\n";
 
 #include <petscgdsw.h>
+#include <fstream>
+#include <omp.h>
 #include <string>
 
 /* h^2 times the upwind difference operator (wind beta (1, 1/2) > 0: backward differences). */
@@ -215,6 +218,17 @@ static PetscErrorCode ChangeOne(PC pc)
   PetscFunctionReturn(0);
 }
 
+/* The "Threads:" line of /proc/self/status: an OpenMP team, once opened, stays in the process. */
+static PetscInt ProcessThreads()
+{
+  std::ifstream status("/proc/self/status");
+  std::string   key;
+  PetscInt      n = -1;
+  while (status >> key)
+    if (key == "Threads:") status >> n;
+  return n;
+}
+
 static PetscErrorCode Run(const std::string &c)
 {
   PetscInt  n    = 32;
@@ -237,8 +251,13 @@ static PetscErrorCode Run(const std::string &c)
   PetscCall(PCSetType(pc, PCGDSW));
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(PrintSettings(pc));
+  omp_set_max_active_levels(2);
+  const PetscInt threads = ProcessThreads();
   PetscCall(KSPSetUp(ksp));
-  if (c == "transpose") {
+  if (c == "threads") {
+    PetscCall(PetscSynchronizedPrintf(PETSC_COMM_WORLD, "threads before %" PetscInt_FMT " after %" PetscInt_FMT " levels before 2 after %d\n", threads, ProcessThreads(), omp_get_max_active_levels()));
+    PetscCall(PetscSynchronizedFlush(PETSC_COMM_WORLD, PETSC_STDOUT));
+  } else if (c == "transpose") {
     PetscCall(CheckAdjoint(pc, A));
     PetscCall(Solve(ksp, PETSC_FALSE, "forward"));
     PetscCall(Solve(ksp, PETSC_TRUE, "transpose"));

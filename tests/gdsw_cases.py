@@ -669,6 +669,25 @@ def api_transpose():
 
 
 @case
+def setup_threads():
+    """The set-up runs on one thread per rank: CHOLMOD (SuiteSparse 5) opens OpenMP teams of a
+    fixed 4 threads to zero its factor, whatever OMP_NUM_THREADS says, and a team once opened
+    stays in the process. On the Laplacian (beta 0: Cholesky, CHOLMOD), one 8192-dof subdomain per
+    rank, 2 ranks: without OMP_NUM_THREADS and with OMP_NUM_THREADS=1 the process has as many
+    threads after KSPSetUp as before, and the OpenMP max-active-levels the caller set (2) is
+    restored; with OMP_NUM_THREADS=4 (the user asked for threads) the runtime is left alone and
+    CHOLMOD's team appears (3 more threads), so the case does exercise it."""
+    opts = ["-case", "threads", "-beta", 0, "-n", 128, "-pc_gdsw_subdomains", 1]
+    for env, more in ((["env", "-u", "OMP_NUM_THREADS"], 0), (["env", "OMP_NUM_THREADS=1"], 0), (["env", "OMP_NUM_THREADS=4"], 3)):
+        out = run(env + [API] + opts, np=2)
+        rows = [l.split() for l in out.splitlines() if l.startswith("threads before")]
+        assert len(rows) == 2, out
+        for w in rows:
+            between(int(w[4]) - int(w[2]), more, more, f"threads opened by the set-up, {' '.join(env[1:])}")
+            assert w[9] == "2", f"max-active-levels not restored: {w}"
+
+
+@case
 def combination_coarse_exact():
     """The symmetric multiplicative (balanced) combination y = Q0 x + (I - Q0 A) M1 (I - A Q0) x, Q0 = Phi A_0^{-1} Phi^T,
     solves the coarse space exactly: P A Phi c = Phi c, and P^T A^T Phi c = Phi c, for random c

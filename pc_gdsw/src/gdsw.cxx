@@ -179,7 +179,7 @@ static PetscErrorCode GetAIJOperator(PC pc, MatReuse reuse)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode PCSetUp_GDSW(PC pc)
+static PetscErrorCode SetUp(PC pc)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
 
@@ -220,6 +220,18 @@ static PetscErrorCode PCSetUp_GDSW(PC pc)
     }
     PetscCall(GDSWSetUpFirstLevel(pc, MAT_REUSE_MATRIX));
   }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCSetUp_GDSW(PC pc)
+{
+  PetscInt levels;
+
+  PetscFunctionBegin;
+  PetscCall(GDSWSerialRegionsBegin(&levels));
+  PetscErrorCode ierr = SetUp(pc);
+  PetscCall(GDSWSerialRegionsEnd(levels));
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }
 

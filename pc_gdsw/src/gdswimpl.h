@@ -6,6 +6,7 @@
      coarse_operator.cxx A_0 = Phi^T A Phi
      coarse_solver.cxx  the solver of A_0
      first_level.cxx    local solvers on Omega_i^delta and their restriction/prolongation
+     threads.cxx        one thread per rank while the set-up factors
      gdsw.cxx           the PC object: options, setup order, apply and its transpose, view, public API */
 #pragma once
 
@@ -139,6 +140,8 @@ PETSC_INTERN PetscErrorCode GDSWApplyBalanced(PC, Vec, Vec, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWDefaultFactorSolver(KSP, MatSolverType, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWSetUpLocalSolver(PC, KSP, gdsw::Subdomain &, gdsw::LocalMatrix);
 PETSC_INTERN PetscErrorCode GDSWViewLocalSolvers(PC, PetscViewer);
+PETSC_INTERN PetscErrorCode GDSWSerialRegionsBegin(PetscInt *);
+PETSC_INTERN PetscErrorCode GDSWSerialRegionsEnd(PetscInt);
 PETSC_INTERN PetscInt       GDSWSubdomainSizeTarget(const PC_GDSW *);
 
 PETSC_INTERN PetscLogEvent GDSW_Decomposition, GDSW_Interface, GDSW_Basis, GDSW_Extension,
