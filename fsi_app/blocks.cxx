@@ -1,26 +1,48 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "blocks.h"
+#include "coupling/block.h"
+#include "fluid/block.h"
+#include "geometry/block.h"
+#include "structure/block.h"
 #include <algorithm>
+#include <functional>
 
 namespace fsi {
 
-PetscErrorCode CreateBlocks(const Scene &sc, Blocks &b)
+/* Every block type a scene can name, in the order of their fields. */
+struct BlockType {
+  const char                                          *name;
+  std::function<std::unique_ptr<Block>(const Scene &)> create;
+};
+static const BlockType Registry[] = {
+  {"structure", [](const Scene &sc) { return std::unique_ptr<Block>(new StructureBlock(sc)); }},
+  {"fluid",     [](const Scene &sc) { return std::unique_ptr<Block>(new FluidBlock(sc)); }    },
+  {"geometry",  [](const Scene &sc) { return std::unique_ptr<Block>(new GeometryBlock(sc)); } },
+  {"coupling",  [](const Scene &sc) { return std::unique_ptr<Block>(new CouplingBlock(sc)); } },
+};
+
+PetscErrorCode CreateBlocks(Scene &sc, Blocks &b)
 {
-  auto      has      = [&](const char *name) { return (PetscBool)(std::find(sc.blocks.begin(), sc.blocks.end(), name) != sc.blocks.end()); };
-  PetscBool coupled  = has("coupling");
+  std::string known;
+  PetscBool   help;
 
   PetscFunctionBegin;
+  for (const BlockType &t : Registry) known += (known.empty() ? "" : ", ") + std::string(t.name);
   for (const auto &n : sc.blocks)
-    PetscCheck(n == "structure" || n == "fluid" || n == "geometry" || n == "coupling", PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-blocks: unknown block '%s' (structure, fluid, geometry, coupling)", n.c_str());
-  PetscCheck(!coupled || (has("structure") && has("fluid") && has("geometry")), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-blocks: the coupling ties structure, fluid and geometry: name all four");
-  PetscCheck(!coupled || sc.region[0], PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_region: name the wall's group (the fluid's cells are not the wall's)");
-  if (has("structure")) b.structure = std::make_unique<StructureBlock>(sc);
-  if (has("geometry")) b.geometry = std::make_unique<GeometryBlock>(sc, coupled, has("fluid"));
-  if (has("fluid")) b.fluid = std::make_unique<FluidBlock>(sc, b.geometry.get());
-  if (coupled) b.coupling = std::make_unique<CouplingBlock>(sc, *b.structure, *b.fluid, *b.geometry);
-  for (Block *blk : {(Block *)b.structure.get(), (Block *)b.fluid.get(), (Block *)b.geometry.get(), (Block *)b.coupling.get()})
-    if (blk) b.list.push_back(blk);
-  PetscCheck(!b.list.empty(), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-blocks: name at least one block");
+    PetscCheck(std::any_of(std::begin(Registry), std::end(Registry), [&](const BlockType &t) { return n == t.name; }), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-blocks: unknown block '%s' (%s)", n.c_str(), known.c_str());
+  for (const BlockType &t : Registry)
+    if (std::find(sc.blocks.begin(), sc.blocks.end(), t.name) != sc.blocks.end()) b.owned.push_back(t.create(sc));
+  PetscCheck(!b.owned.empty(), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-blocks: name at least one block");
+  for (auto &blk : b.owned) b.list.push_back(blk.get());
+  for (Block *blk : b.list) PetscCall(blk->Wire(b.list));
+  for (Block *blk : b.list) PetscCall(blk->ReadOptions(sc.problem));
+  for (Block *blk : b.list) PetscCall(blk->Check());
+  PetscCall(PetscOptionsHasHelp(nullptr, &help));
+  if (help) { /* -help lists every block's options, the scene's or not */
+    std::map<std::string, std::string> unused;
+    for (const BlockType &t : Registry)
+      if (std::find(sc.blocks.begin(), sc.blocks.end(), t.name) == sc.blocks.end()) PetscCall(t.create(sc)->ReadOptions(unused));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -46,9 +68,8 @@ Splits Blocks::Splits() const
     if (s->name == blk->Name()) s->owner = blk;
   }
   for (auto &s : splits) std::sort(s.fields.begin(), s.fields.end());
-  const std::vector<std::string> order = {"structure", "geometry", "fluid"}; /* the block lower triangle */
-  auto rank = [&](const std::string &n) { return std::find(order.begin(), order.end(), n) - order.begin(); };
-  std::stable_sort(splits.begin(), splits.end(), [&](const Split &a, const Split &b) { return rank(a.name) < rank(b.name); });
+  auto place = [](const Split &s) { return s.owner ? s.owner->SplitPlace() : 0; };
+  std::stable_sort(splits.begin(), splits.end(), [&](const Split &a, const Split &b) { return place(a) < place(b); });
   return splits;
 }
 

@@ -32,7 +32,8 @@ static PetscErrorCode CreateMesh(const Scene &sc, const Blocks &b, DM *dm)
   }
   for (const auto &g : groups) /* "boundary" is made below; a group named by the same option twice is checked once */
     if (!g.group.empty() && g.group != "boundary" && std::none_of(required.begin(), required.end(), [&](const GroupUse &r) { return r.group == g.group && r.option == g.option; })) required.push_back(g);
-  PetscCall(LoadMesh(PETSC_COMM_WORLD, sc.mesh, required, regions, dm));
+  PetscCall(LoadMesh(PETSC_COMM_WORLD, sc.mesh, sc.meshOrder, required, regions, dm));
+  PetscCheck(!sc.refine || !MeshIsCurved(*dm), PETSC_COMM_WORLD, PETSC_ERR_SUP, "-refine %" PetscInt_FMT " on the curved cells of '%s': refinement would place the new nodes on the straight edges; make a finer second-order mesh (scripts/make-meshes NAME LEVEL 2) or read this one with -mesh_order 1", sc.refine, sc.mesh);
   if (sc.refine > 0) { /* each refinement makes 8 tetrahedra of one; a tetrahedral mesh has about 4.3 points (cells, faces, edges, vertices) per cell */
     PetscInt  cStart, cEnd;
     PetscReal cells, fine;
@@ -99,30 +100,27 @@ static PetscErrorCode CreateSolver(const Scene &sc, DM dm, const Blocks &b, SNES
   PetscFunctionReturn(0);
 }
 
-/* Global unknowns per field, under the names of the monolithic system's blocks (a block a
-   scene does not solve has none), and per rank. */
-static PetscErrorCode CountUnknowns(DM dm, RunReport &report)
+/* Global unknowns of each block's fields, under the names the blocks give them, and per rank. */
+static PetscErrorCode CountUnknowns(DM dm, const Blocks &b, RunReport &report)
 {
-  const std::vector<std::pair<std::string, std::string>> block = {{"displacement", "structure"}, {"velocity", "fluid"}, {"pressure", "pressure"}, {"geometry", "geometry"}, {"multiplier", "multiplier"}};
-  IS                                                    *is;
-  char                                                 **names;
-  PetscInt                                               nf;
-  PetscMPIInt                                            size;
+  std::vector<std::pair<std::string, PetscInt>> fields;
+  IS                                           *is;
+  char                                        **names;
+  PetscInt                                      nf;
+  PetscMPIInt                                   size;
 
   PetscFunctionBegin;
+  for (const Block *blk : b.list) blk->Unknowns(fields);
   PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)dm), &size));
   PetscCall(DMCreateFieldIS(dm, &nf, &names, &is));
-  for (const auto &b : block) {
+  for (const auto &f : fields) {
     PetscInt              n = 0, mine = 0;
     std::vector<PetscInt> perRank(size, 0);
-    for (PetscInt f = 0; f < nf; f++)
-      if (b.first == names[f]) {
-        PetscCall(ISGetSize(is[f], &n));
-        PetscCall(ISGetLocalSize(is[f], &mine));
-      }
+    PetscCall(ISGetSize(is[f.second], &n));
+    PetscCall(ISGetLocalSize(is[f.second], &mine));
     PetscCallMPI(MPI_Allgather(&mine, 1, MPIU_INT, perRank.data(), 1, MPIU_INT, PetscObjectComm((PetscObject)dm)));
-    report.unknowns.push_back({b.second, n});
-    report.unknownsPerRank.push_back({b.second, perRank});
+    report.unknowns.push_back({f.first, n});
+    report.unknownsPerRank.push_back({f.first, perRank});
   }
   for (PetscInt f = 0; f < nf; f++) {
     PetscCall(ISDestroy(&is[f]));
@@ -199,13 +197,14 @@ int main(int argc, char **argv)
   PetscCall(PCRegisterFaCSIFluid());
   PetscCall(PhasesBegin());
   PetscCall(ReadScene(sc));
-  if (sc.checkpoint[0] || sc.restart[0]) PetscCall(FileDigest(PETSC_COMM_WORLD, sc.mesh, &sc.problem[MeshDigestKey]));
   PetscCall(CreateBlocks(sc, b));
+  PetscCall(CheckSceneFiles(sc));
+  if (sc.checkpoint[0] || sc.restart[0]) PetscCall(FileDigest(PETSC_COMM_WORLD, sc.mesh, &sc.problem[MeshDigestKey]));
   PetscCall(CreateMesh(sc, b, &dm));
   PetscCall(SetUpBlocks(dm, b));
   PetscCall(DMCreateGlobalVector(dm, &x));
   PetscCall(PetscObjectSetName((PetscObject)x, "solution"));
-  PetscCall(CountUnknowns(dm, report));
+  PetscCall(CountUnknowns(dm, b, report));
   PetscCall(CreateSolver(sc, dm, b, &snes));
 
   const PetscBool dynamic = sc.Dynamic();
@@ -268,16 +267,15 @@ int main(int argc, char **argv)
   for (const auto &r : report.steps) newton += r.newton, krylov += r.krylov;
   const PetscInt solved = (PetscInt)report.steps.size();
   if (dynamic && solved) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "steps %" PetscInt_FMT " newton per step %.2f krylov per newton %.2f\n", solved, (double)newton / solved, newton ? (double)krylov / newton : 0.0));
-  PetscInt    headline = -1;
-  const char *what     = nullptr;
+  Headline h{"solution", -1, "solution_norm"};
   for (const Block *blk : b.list)
-    if (!what) what = blk->Headline(&headline);
+    if (blk->Summary(&h)) break;
   PetscReal hmax, xnorm;
-  PetscCall(FieldNorm(dm, x, headline, NORM_INFINITY, &hmax));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "newton %" PetscInt_FMT " krylov %" PetscInt_FMT " reason %s time %.3f s max %s %.6e\n", newton, krylov, SNESConvergedReasons[reason], t1 - t0, what, (double)hmax));
+  PetscCall(FieldNorm(dm, x, h.field, NORM_INFINITY, &hmax));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "newton %" PetscInt_FMT " krylov %" PetscInt_FMT " reason %s time %.3f s max %s %.6e\n", newton, krylov, SNESConvergedReasons[reason], t1 - t0, h.name.c_str(), (double)hmax));
   PetscCall(CheckFinished(sc, b, snes, report));
   PetscCall(VecNorm(x, NORM_2, &xnorm));
-  report.results.insert(report.results.end(), {{std::string("max_") + what, hmax}, {std::string(what) == "displacement" ? "displacement_norm" : "solution_norm", xnorm}});
+  report.results.insert(report.results.end(), {{"max_" + h.name, hmax}, {h.norm, xnorm}});
   for (Block *blk : b.list) PetscCall(blk->Results(dm, x, dynamic ? loop.steps * step : 1.0, report));
   std::vector<std::string> splits;
   for (const Split &s : b.Splits()) splits.push_back(s.name);

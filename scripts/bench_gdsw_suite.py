@@ -83,7 +83,7 @@ def problems():
     cases += [("P3", f"nu={nu}", f"{el} -n {n3} -nu {nu}") for nu in ("0.45", "0.49", "0.499", "0.4999")]
     mesh, dofs = ("tube1_L0", 12240) if quick else ("tube3_L0", 100827)
     wall = (f"mpiexec -n 2 {FSI} -mesh {top}/meshes/{mesh}.msh -structure_region wall -structure_clamp wall_inlet_ring,wall_outlet_ring "
-            f"-structure_pressure 1330 -structure_pressure_group interface -material linear -E 4e5 -nu 0.3 -structure_density 1.2 "
+            f"-structure_pressure 1330 -structure_pressure_group interface -structure_material linear -structure_E 4e5 -structure_nu 0.3 -structure_density 1.2 "
             f"-snes_type ksponly -structure_subdomains {default_subdomains(dofs / 2)}")
     cases += [("P4", f"{mesh} dt={dt}", f"{wall} -dt {dt} -t_final {dt}") for dt in ("1e-4", "5e-4")]
     return [c if len(c) == 4 else (*c, list(METHODS)) for c in cases]

@@ -36,9 +36,9 @@ PCS = {
     "PCASM": "-pc_type asm -pc_asm_overlap 1 -pc_asm_type basic -sub_pc_type cholesky -sub_pc_factor_mat_solver_type cholmod",
     "GAMG": "-pc_type gamg -pc_gamg_threshold 0.01 -mg_levels_ksp_max_it 2",
 }
-MATERIALS = {"linear": "-material linear -E 4e5 -nu 0.3 -snes_type ksponly -ksp_type cg",
-             "neohooke": "-material neohooke -snes_type newtonls -ksp_type gmres",
-             "arterial": "-material arterial -snes_type newtonls -ksp_type gmres"}
+MATERIALS = {"linear": "-structure_material linear -structure_E 4e5 -structure_nu 0.3 -snes_type ksponly -ksp_type cg",
+             "neohooke": "-structure_material neohooke -snes_type newtonls -ksp_type gmres",
+             "arterial": "-structure_material arterial -snes_type newtonls -ksp_type gmres"}
 
 
 def measure(mesh, material, dt, T, pc, subdomains):

@@ -6,11 +6,30 @@
 
 namespace fsi {
 
-PetscErrorCode CouplingBlock::AddFields(DM dm)
+PetscErrorCode CouplingBlock::Wire(const std::vector<Block *> &scene)
+{
+  PetscFunctionBegin;
+  structure = FindBlock<StructureBlock>(scene, "structure");
+  fluid     = FindBlock<FluidBlock>(scene, "fluid");
+  geometry  = FindBlock<GeometryBlock>(scene, "geometry");
+  PetscCheck(structure && fluid && geometry, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-blocks: the coupling ties structure, fluid and geometry: name all four");
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CouplingBlock::Check() const
 {
   PetscFunctionBegin;
   PetscCheck(sc.Dynamic(), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-dt 0: the coupled problem is dynamic (u = d_t d_s on the interface); give a time step");
-  PetscCall(AddLagrangeField(dm, "multiplier", sc.interface, 3, 2, &field));
+  PetscCheck(structure->opt.region[0], PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_region: name the wall's group (the fluid's cells are not the wall's)");
+  for (const auto &g : SplitList(fluid->opt.noslip))
+    PetscCheck(g.substr(0, g.find(':')) != geometry->opt.interface, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_noslip %s: on the interface %s the fluid moves with the wall (the coupling's u = d_t d_s); remove it from -fluid_noslip", fluid->opt.noslip, geometry->opt.interface);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CouplingBlock::AddFields(DM dm)
+{
+  PetscFunctionBegin;
+  PetscCall(AddLagrangeField(dm, "multiplier", geometry->opt.interface, 3, 2, &field));
   PetscFunctionReturn(0);
 }
 
@@ -20,8 +39,8 @@ PetscErrorCode CouplingBlock::AddConditions(DM dm, Conditions &list)
   DMLabel                      fixed;
 
   PetscFunctionBegin;
-  PetscCall(ConstrainedComponents(dm, list, fluid.velocity, 3, u));
-  PetscCall(ConstrainedComponents(dm, list, structure.field, 3, d));
+  PetscCall(ConstrainedComponents(dm, list, fluid->velocity, 3, u));
+  PetscCall(ConstrainedComponents(dm, list, structure->field, 3, d));
   PetscCall(DMCreateLabel(dm, "multiplier_fixed"));
   PetscCall(DMGetLabel(dm, "multiplier_fixed", &fixed));
   for (const auto &pu : u) { /* value: the components fixed in both */
@@ -70,7 +89,7 @@ PetscErrorCode CouplingBlock::SetUp(DM dm)
   PetscSF         sf;
   PetscInt        pStart, pEnd, nleaves, bad = -1, gbad;
   const PetscInt *leaves;
-  const PetscInt  fields[4] = {field, fluid.velocity, structure.field, geometry.field};
+  const PetscInt  fields[4] = {field, fluid->velocity, structure->field, geometry->field};
 
   PetscFunctionBegin;
   PetscCall(DMGetLocalSection(dm, &local));
@@ -95,7 +114,10 @@ PetscErrorCode CouplingBlock::SetUp(DM dm)
     if (!ghost[p - pStart] && bad < 0) nodes.push_back(n);
   }
   PetscCallMPI(MPIU_Allreduce(&bad, &gbad, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)dm)));
-  PetscCheck(gbad < 0, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_WRONG, "-geometry_interface %s: the group's faces must lie between cells of -fluid_region %s and of -structure_region %s with a node of each at every interface node (a conforming interface); mesh point %" PetscInt_FMT " lacks one", sc.interface, sc.fluidRegion, sc.region, gbad);
+  PetscCheck(gbad < 0, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_WRONG, "-geometry_interface %s: the group's faces must lie between cells of -fluid_region %s and of -structure_region %s with a node of each at every interface node (a conforming interface); mesh point %" PetscInt_FMT " lacks one", geometry->opt.interface, fluid->opt.region, structure->opt.region, gbad);
+  DMLabel wall;
+  PetscCall(DMGetLabel(dm, geometry->opt.interface, &wall));
+  PetscCall(CellFacesCreate(dm, fluid->forms.velocity, wall, wallFaces));
   PetscFunctionReturn(0);
 }
 
@@ -189,8 +211,8 @@ PetscErrorCode CouplingBlock::Continuity(DM dm, PetscReal *velocity, PetscReal *
    local state x. */
 PetscErrorCode CouplingBlock::FluidVolume(DM dm, const PetscScalar *x, PetscReal *volume)
 {
-  const FieldCells &cells = geometry.forms.cells;
-  const P2Rule     &rule  = fluid.forms.rule;
+  const FieldCells &cells = geometry->forms.cells;
+  const P2Rule     &rule  = fluid->forms.rule;
   PetscReal         sum   = 0;
 
   PetscFunctionBegin;
@@ -221,9 +243,9 @@ PetscErrorCode CouplingBlock::AfterStep(DM dm, PetscInt, PetscReal t, Vec x)
       before.push_back(v);
     }
   b.t = t;
-  PetscCall(FluidFlux(dm, fluid.forms, fluid.inletFaces, x, &b.in));
-  PetscCall(FluidFlux(dm, fluid.forms, fluid.outletFaces, x, &b.out));
-  PetscCall(FluidFlux(dm, fluid.forms, fluid.interfaceFaces, x, &b.wall));
+  PetscCall(FluidFlux(dm, fluid->forms, fluid->inletFaces, x, &b.in));
+  PetscCall(FluidFlux(dm, fluid->forms, fluid->outletFaces, x, &b.out));
+  PetscCall(FluidFlux(dm, fluid->forms, wallFaces, x, &b.wall));
   {
     const PetscScalar *y; /* past[0] is x with its essential values */
     PetscCall(VecGetArrayRead(history->past[0], &y));

@@ -22,9 +22,12 @@ namespace fsi {
 
 class CouplingBlock : public Block {
 public:
-  CouplingBlock(const Scene &sc, StructureBlock &s, FluidBlock &f, GeometryBlock &g) : sc(sc), structure(s), fluid(f), geometry(g) {}
-  const char *Name() const override { return "coupling"; }
-  void        Groups(std::vector<GroupUse> &groups) const override { groups.push_back({sc.interface, "-geometry_interface", 2}); }
+  explicit CouplingBlock(const Scene &sc) : sc(sc) {}
+  const char    *Name() const override { return "coupling"; }
+  PetscErrorCode Wire(const std::vector<Block *> &scene) override;
+  PetscErrorCode ReadOptions(std::map<std::string, std::string> &) override { return 0; } /* none of its own */
+  PetscErrorCode Check() const override;
+  void           Groups(std::vector<GroupUse> &groups) const override { groups.push_back({geometry->opt.interface, "-geometry_interface", 2}); }
 
   PetscErrorCode AddFields(DM dm) override;
   PetscErrorCode AddConditions(DM dm, Conditions &list) override;
@@ -38,6 +41,7 @@ public:
   /* lambda joins the fluid's split: the fluid block with its interface rows (FaCSI's fluid(u, p, lambda)) */
   const char           *SplitName() const override { return "fluid"; }
   std::vector<PetscInt> SplitFields() const override { return {field}; }
+  void                  Unknowns(std::vector<std::pair<std::string, PetscInt>> &u) const override { u.push_back({"multiplier", field}); }
 
   PetscErrorCode AfterStep(DM dm, PetscInt step, PetscReal t, Vec x) override;
   PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) override;
@@ -55,12 +59,13 @@ private:
   PetscErrorCode Continuity(DM dm, PetscReal *velocity, PetscReal *geometric);
   PetscErrorCode FluidVolume(DM dm, const PetscScalar *x, PetscReal *volume);
 
-  const Scene       &sc;
-  StructureBlock    &structure;
-  FluidBlock        &fluid;
-  GeometryBlock     &geometry;
-  const TimeHistory *history = nullptr;
-  std::vector<Node>  nodes;
+  const Scene          &sc;
+  StructureBlock       *structure = nullptr;
+  FluidBlock           *fluid     = nullptr;
+  GeometryBlock        *geometry  = nullptr;
+  const TimeHistory    *history   = nullptr;
+  std::vector<Node>     nodes;
+  std::vector<CellFace> wallFaces; /* the fluid's faces on the interface: the flux through the moving wall */
   /* the volume balance per step: fluxes through inlet, outlet and interface, fluid volume */
   struct Balance {
     PetscReal t, in, out, wall, volume;

@@ -15,7 +15,11 @@ PetscReal DeformationGradient(const PetscReal de[30], const PetscReal dN[10][3],
 
 PetscReal MovePoint(const CellGeometry &g, const PetscReal *de, const PetscReal l[4], const PetscReal N[10], MovedPoint &m)
 {
-  PetscReal dN[10][3], F[9];
+  PetscReal dN[10][3], F[9], both[30];
+  if (g.curved) {
+    for (int k = 0; k < 30; k++) both[k] = g.bend[k] + (de ? de[k] : 0.0);
+    de = both;
+  }
   P2Gradients(g, l, dN);
   for (int d = 0; d < 3; d++) m.x[d] = l[0] * g.x[0][d] + l[1] * g.x[1][d] + l[2] * g.x[2][d] + l[3] * g.x[3][d];
   if (!de) {
@@ -41,6 +45,24 @@ PetscReal MovePoint(const CellGeometry &g, const PetscReal *de, const PetscReal 
   for (int c = 0; c < 4; c++)
     for (int j = 0; j < 3; j++) m.dL[c][j] = m.Finv[0][j] * g.gradLambda[c][0] + m.Finv[1][j] * g.gradLambda[c][1] + m.Finv[2][j] * g.gradLambda[c][2];
   return m.J;
+}
+
+PetscReal ReferenceGradients(const CellGeometry &g, const P2Rule &rule, PetscInt q, PetscReal dN[10][3], PetscReal X[3])
+{
+  const PetscReal *l = &rule.lambda[4 * q];
+  if (!g.curved) {
+    P2Gradients(g, l, dN);
+    if (X)
+      for (int d = 0; d < 3; d++) X[d] = l[0] * g.x[0][d] + l[1] * g.x[1][d] + l[2] * g.x[2][d] + l[3] * g.x[3][d];
+    return rule.w[q] * g.detE;
+  }
+  MovedPoint m;
+  MovePoint(g, nullptr, l, &rule.N[10 * q], m);
+  for (int a = 0; a < 10; a++)
+    for (int d = 0; d < 3; d++) dN[a][d] = m.dN[a][d];
+  if (X)
+    for (int d = 0; d < 3; d++) X[d] = m.x[d];
+  return rule.w[q] * g.detE * m.J;
 }
 
 } // namespace fsi

@@ -21,8 +21,15 @@ struct MovedPoint {
    gradients dN; returns det F. */
 PetscReal DeformationGradient(const PetscReal de[30], const PetscReal dN[10][3], PetscReal F[9]);
 
-/* The point l (barycentric) of cell g moved by de; de == nullptr: the cell does not move
-   (J = 1, F = I). Returns the point's J: the caller decides what J <= 0 means. */
+/* The point l (barycentric) of cell g moved by de, from the straight cell: a curved cell's bend
+   is added to de (the map is X + bend + de); de == nullptr: the cell does not move (J = 1,
+   F = I for a straight cell; the bend's J and F for a curved one). An integral over the moved
+   cell is sum_q w_q f detE J. Returns the point's J: the caller decides what J <= 0 means. */
 PetscReal MovePoint(const CellGeometry &g, const PetscReal *de, const PetscReal l[4], const PetscReal N[10], MovedPoint &m);
+
+/* At point q of `rule` in cell g, unmoved: the basis gradients in its coordinates, the point X
+   (if asked) and its weight w_q |dX/dl| (affine for a straight cell, through the bend for a
+   curved one, whose J > 0 FieldCellsCreate checked). */
+PetscReal ReferenceGradients(const CellGeometry &g, const P2Rule &rule, PetscInt q, PetscReal dN[10][3], PetscReal X[3] = nullptr);
 
 } // namespace fsi

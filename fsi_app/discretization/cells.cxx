@@ -1,14 +1,37 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "cells.h"
+#include "discretization/ale_map.h"
+#include "io/files.h"
 #include "mesh/mesh.h"
 #include <algorithm>
+#include <cstdio>
 
 namespace fsi {
+
+/* Why a curved cell's map does not keep its orientation (J <= 0 at one of its ten nodes or
+   its centroid), or "" if it does. */
+static std::string Folded(const CellGeometry &g)
+{
+  const PetscReal at[11][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}, {.5, .5, 0, 0}, {.5, 0, .5, 0}, {.5, 0, 0, .5}, {0, .5, .5, 0}, {0, .5, 0, .5}, {0, 0, .5, .5}, {.25, .25, .25, .25}};
+  for (const auto &l : at) {
+    PetscReal  N[10];
+    MovedPoint m;
+    char       s[512];
+    P2Values(l, N);
+    const PetscReal J = MovePoint(g, nullptr, l, N, m);
+    if (J > 0) continue;
+    std::snprintf(s, sizeof(s), "the curved tetrahedron with vertices (%g, %g, %g), (%g, %g, %g), (%g, %g, %g), (%g, %g, %g) is folded by its second-order nodes (J = %g at (%g, %g, %g)); mesh with smaller cells where the boundary curves, or read the file with -mesh_order 1",
+                  (double)g.x[0][0], (double)g.x[0][1], (double)g.x[0][2], (double)g.x[1][0], (double)g.x[1][1], (double)g.x[1][2], (double)g.x[2][0], (double)g.x[2][1], (double)g.x[2][2], (double)g.x[3][0], (double)g.x[3][1], (double)g.x[3][2], (double)J, (double)m.x[0], (double)m.x[1], (double)m.x[2]);
+    return s;
+  }
+  return "";
+}
 
 PetscErrorCode FieldCellsCreate(DM dm, DMLabel region, PetscInt field, FieldCells &cells)
 {
   PetscSection local, global;
   PetscInt     cStart, cEnd, nf;
+  std::string  folded; /* the first curved cell of this rank that its nodes fold */
 
   PetscFunctionBegin;
   PetscCall(DMGetLocalSection(dm, &local));
@@ -25,6 +48,7 @@ PetscErrorCode FieldCellsCreate(DM dm, DMLabel region, PetscInt field, FieldCell
     CellGeometry g;
     PetscInt     pt[10], n, *idx, ncl, *closure = nullptr;
     PetscCall(CellP2(dm, c, g, pt));
+    if (g.curved && folded.empty()) folded = Folded(g);
     /* closure indices are field-major: field f's block starts after the other fields' dofs of
        the whole closure; within it, each point's dofs of f in closure order */
     std::vector<PetscInt> start(nf + 1, 0);
@@ -56,6 +80,7 @@ PetscErrorCode FieldCellsCreate(DM dm, DMLabel region, PetscInt field, FieldCell
     cells.cell.push_back(c), cells.geom.push_back(g);
   }
   cells.rows = cells.global;
+  PetscCall(CheckOnAnyRank(PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_WRONG, folded));
   PetscFunctionReturn(0);
 }
 
@@ -115,7 +140,7 @@ void SetNodalValues(const FieldCells &cells, const std::function<void(const Pets
     const CellGeometry &g = cells.geom[k];
     for (PetscInt a = 0; a < cells.nodes; a++) {
       PetscReal X[3];
-      for (int d = 0; d < 3; d++) X[d] = a < 4 ? g.x[a][d] : (g.x[EdgeVertex[a - 4][0]][d] + g.x[EdgeVertex[a - 4][1]][d]) / 2;
+      for (int d = 0; d < 3; d++) X[d] = a < 4 ? g.x[a][d] : (g.x[EdgeVertex[a - 4][0]][d] + g.x[EdgeVertex[a - 4][1]][d]) / 2 + (g.curved ? g.bend[3 * a + d] : 0.0);
       value(X, &x[cells.local[cells.nodes * k + a]]);
     }
   }

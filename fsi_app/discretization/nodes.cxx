@@ -18,7 +18,7 @@ PetscErrorCode NodePosition(DM dm, PetscInt point, PetscReal x[3])
   PetscCall(DMGetCoordinateDM(dm, &cdm));
   PetscCall(DMGetLocalSection(cdm, &csec));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
-  if (point < vStart || point >= vEnd) { /* an edge: the midpoint of its vertices */
+  if (point < vStart || point >= vEnd) { /* an edge: the midpoint of its vertices, or a curved edge's node */
     PetscCall(DMPlexGetCone(dm, point, &pts));
     np = 2;
   }
@@ -28,6 +28,16 @@ PetscErrorCode NodePosition(DM dm, PetscInt point, PetscReal x[3])
     PetscInt off;
     PetscCall(PetscSectionGetOffset(csec, pts[k], &off));
     for (int d = 0; d < 3; d++) x[d] += PetscRealPart(xa[off + d]) / np;
+  }
+  if (np == 2) {
+    PetscReal ends[2][3], node[3];
+    for (PetscInt k = 0; k < 2; k++) {
+      PetscInt off;
+      PetscCall(PetscSectionGetOffset(csec, pts[k], &off));
+      for (int d = 0; d < 3; d++) ends[k][d] = PetscRealPart(xa[off + d]);
+    }
+    if (MeshEdgeNode(dm, ends[0], ends[1], node))
+      for (int d = 0; d < 3; d++) x[d] = node[d];
   }
   PetscCall(VecRestoreArrayRead(coords, &xa));
   PetscFunctionReturn(0);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "p2tet.h"
+#include "mesh/mesh.h"
 #include <petscdt.h>
 
 namespace fsi {
@@ -98,10 +99,22 @@ PetscErrorCode CellP2(DM dm, PetscInt cell, CellGeometry &g, PetscInt nodePoint[
   PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &nclosure, &closure));
   PetscCall(VecRestoreArrayRead(coords, &xa));
   PetscCheck(nv == 4 && ne == 6, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "cell %" PetscInt_FMT " is not a tetrahedron (%" PetscInt_FMT " vertices, %" PetscInt_FMT " edges)", cell, nv, ne);
+  g.curved = PETSC_FALSE;
+  for (int k = 0; k < 30; k++) g.bend[k] = 0;
   for (int e = 0; e < 6; e++) { /* our edge (a, b) is the closure edge whose cone is {vertex[a], vertex[b]} */
-    const PetscInt a = vertex[EdgeVertex[e][0]], b = vertex[EdgeVertex[e][1]];
+    const int      i = EdgeVertex[e][0], j = EdgeVertex[e][1];
+    const PetscInt a = vertex[i], b = vertex[j];
     for (int f = 0; f < 6; f++)
-      if ((edgeCone[f][0] == a && edgeCone[f][1] == b) || (edgeCone[f][0] == b && edgeCone[f][1] == a)) nodePoint[4 + e] = edge[f];
+      if ((edgeCone[f][0] == a && edgeCone[f][1] == b) || (edgeCone[f][0] == b && edgeCone[f][1] == a)) {
+        PetscReal node[3], off = 0, len = 0;
+        nodePoint[4 + e] = edge[f];
+        if (!MeshEdgeNode(dm, g.x[i], g.x[j], node)) continue;
+        for (int d = 0; d < 3; d++) {
+          g.bend[3 * (4 + e) + d] = node[d] - (g.x[i][d] + g.x[j][d]) / 2;
+          off += PetscSqr(g.bend[3 * (4 + e) + d]), len += PetscSqr(g.x[i][d] - g.x[j][d]);
+        }
+        if (off > 1e-24 * len) g.curved = PETSC_TRUE; /* straight cells keep the affine loops */
+      }
   }
   for (int k = 0; k < 4; k++) nodePoint[k] = vertex[k];
   /* barycentric gradients: rows of E^{-1}, E = [x1 - x0, x2 - x0, x3 - x0] */

@@ -37,15 +37,21 @@ PetscErrorCode CreateFaceRule(PetscInt degree, FaceRule &rule);
 /* Basis values at barycentric point l of the cell. */
 void P2Values(const PetscReal l[4], PetscReal N[10]);
 
-/* One cell: vertex coordinates, barycentric gradients, |det E| with E = [x1-x0, x2-x0, x3-x0]. */
+/* One cell: vertex coordinates, barycentric gradients, |det E| with E = [x1-x0, x2-x0, x3-x0].
+   A curved (isoparametric P2) cell is the straight one whose edge nodes are moved by `bend`:
+   X(l) = sum_k l_k x_k + sum_a N_a(l) bend_a, the same map as a P2 displacement of the straight
+   cell (ale_map.h), so every loop that moves cells curves them too. */
 struct CellGeometry {
   PetscReal x[4][3];
-  PetscReal gradLambda[4][3]; /* physical gradients of the barycentric coordinates */
-  PetscReal detE;             /* |det E|: an integral is sum_q w_q f(x_q) detE */
+  PetscReal gradLambda[4][3]; /* physical gradients of the barycentric coordinates of the straight cell */
+  PetscReal detE;             /* |det E|: an integral over a straight cell is sum_q w_q f(x_q) detE */
+  PetscBool curved = PETSC_FALSE;
+  PetscReal bend[30];         /* curved: edge node a = 4..9 sits at the straight cell's midpoint + bend[3a..3a+2]; vertices 0 */
 };
 
 /* Geometry of `cell` and the mesh point (vertex or edge) of each of its 10 P2 nodes; where a
-   field's dofs sit is discretization/cells.h's business. */
+   field's dofs sit is discretization/cells.h's business. The cell is curved where the mesh was
+   read from a second-order gmsh file and an edge's node is off its midpoint (MeshEdgeNode). */
 PetscErrorCode CellP2(DM dm, PetscInt cell, CellGeometry &g, PetscInt nodePoint[10]);
 
 /* Physical basis gradients at one point: dN[a][d]. */

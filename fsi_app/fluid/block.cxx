@@ -1,22 +1,23 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "block.h"
 #include "discretization/conditions.h"
-#include "verification/errors.h"
-#include <string>
 #include "discretization/fields.h"
 #include "mesh/mesh.h"
+#include "solver/options.h"
+#include "verification/errors.h"
+#include <string>
 
 namespace fsi {
 
 /* The manufactured flows' Dirichlet faces: the boundary but the outlet, where the exact
    traction fixes the pressure's constant. */
-static PetscErrorCode MMSDirichletFaces(const Scene &sc, DM dm, DMLabel *faces)
+static PetscErrorCode MMSDirichletFaces(const FluidOptions &o, DM dm, DMLabel *faces)
 {
   DMLabel boundary, outlet;
 
   PetscFunctionBegin;
   PetscCall(DMGetLabel(dm, "boundary", &boundary));
-  PetscCall(DMGetLabel(dm, sc.outlet, &outlet));
+  PetscCall(DMGetLabel(dm, o.outlet, &outlet));
   PetscCall(DMCreateLabel(dm, "mms_dirichlet"));
   PetscCall(DMGetLabel(dm, "mms_dirichlet", faces));
   PetscCall(ForEachLabelPoint(boundary, {1}, [&](PetscInt face) -> PetscErrorCode {
@@ -29,23 +30,69 @@ static PetscErrorCode MMSDirichletFaces(const Scene &sc, DM dm, DMLabel *faces)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode FluidBlock::Wire(const std::vector<Block *> &scene)
+{
+  geometry = FindBlock<GeometryBlock>(scene, "geometry");
+  return 0;
+}
+
+PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &problem)
+{
+  FluidOptions &o = opt;
+  PetscInt      n = 3;
+
+  PetscFunctionBegin;
+  /* one pulse for the wall and the inlet unless told otherwise */
+  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-structure_pressure_until", &o.pulseEnd, nullptr));
+  PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "fsi_app: the fluid block", nullptr);
+  const OptionReader r{PetscOptionsObject, problem};
+  PetscCall(r.String("-fluid_region", "physical group of the fluid's cells", o.region, sizeof(o.region), PROBLEM));
+  PetscCall(r.String("-fluid_noslip", "groups of faces where the velocity is zero, comma separated", o.noslip, sizeof(o.noslip), PROBLEM));
+  PetscCall(r.Real("-fluid_density", "density of the fluid (g/cm^3)", &o.rho, Positive, PROBLEM));
+  PetscCall(r.Real("-fluid_viscosity", "dynamic viscosity of the fluid (poise)", &o.mu, Positive, PROBLEM));
+  PetscCall(r.Real("-fluid_inlet_pressure", "normal stress: traction -p n on the faces of -fluid_inlet (dyn/cm^2)", &o.inletPressure, Any, PROBLEM));
+  PetscCall(r.Real("-fluid_inlet_pressure_until", "the inlet pressure acts while t <= this (s); 0: always (default: -structure_pressure_until)", &o.pulseEnd, NonNegative, PROBLEM));
+  PetscCall(r.Reals("-fluid_inflow_velocity", "prescribed velocity ux,uy,uz on the faces of -fluid_inlet (cm/s; no-slip groups keep u = 0 on their nodes)", o.inflowVelocity, &n, &o.inflow, Any, PROBLEM));
+  PetscCheck(!o.inflow || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_inflow_velocity: give ux,uy,uz (got %" PetscInt_FMT " values)", n);
+  PetscCall(r.Points("-fluid_probes", "points x1,y1,z1,x2,... (at most 20, reference configuration) where the pressure is recorded every step (in the run report); with -fluid_inlet_pressure, when the pulse's front (half its pressure) passes each and the wave speed", o.probes));
+  PetscCall(r.String("-fluid_inlet", "group of the inflow faces", o.inlet, sizeof(o.inlet), PROBLEM));
+  PetscCall(r.String("-fluid_outlet", "group of the outflow faces (stress-free)", o.outlet, sizeof(o.outlet), PROBLEM));
+  PetscCall(r.Bool("-fluid_shape_derivatives", "on a moving mesh, the fluid's Jacobian holds its derivative in the mesh displacement (exact Newton); false: quasi-Newton", &o.shapeDerivatives, RUN));
+  n = 3;
+  PetscBool set;
+  PetscCall(r.Reals("-poiseuille", "verification: Hagen-Poiseuille flow in a tube of radius R and length L along z driven by a pressure drop: R,L,dp", o.poiseuille, &n, &set, Any, PROBLEM));
+  PetscCheck(!set || (n == 3 && o.poiseuille[0] > 0 && o.poiseuille[1] > 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-poiseuille: give R,L,dp with R > 0 and L > 0");
+  PetscCall(r.Enum("-mms_flow", "-mms: the manufactured flow (exact velocity on the boundary but -fluid_outlet, exact traction there)", FlowMMSKindNames, &o.mmsFlow, PROBLEM));
+  PetscCall(r.Real("-mms_ramp", "-mms: the trigonometric manufactured flow rises as sin^2(pi t / 2T) over this time T (s); 0: steady", &o.mmsRamp, NonNegative, PROBLEM));
+  PetscOptionsEnd();
+  PetscCheck(!o.inflow || (o.inletPressure == 0 && !sc.mms && o.poiseuille[0] == 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_inflow_velocity: the inlet cannot also take -fluid_inlet_pressure, -mms or -poiseuille (one condition per face)");
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FluidBlock::Check() const
+{
+  PetscFunctionBegin;
+  PetscCheck(!geometry || geometry->Coupled() || !opt.noslip[0], PETSC_COMM_WORLD, PETSC_ERR_SUP, "-fluid_moving_mesh with -fluid_noslip %s: a wall that moves needs u = w (the mesh velocity) there, which the coupling to the structure will impose; until then a moving mesh takes the manufactured flows' boundary values (-mms) and -fluid_noslip must be empty", opt.noslip);
+  PetscFunctionReturn(0);
+}
+
 void FluidBlock::Groups(std::vector<GroupUse> &groups) const
 {
   const char *conditions = "fluid's inlet, outlet and no-slip faces";
-  groups.push_back({sc.fluidRegion, "-fluid_region", 3, RegionsRole});
-  for (const auto &g : SplitList(sc.noslip)) groups.push_back({g.substr(0, g.find(':')), "-fluid_noslip", 2, conditions});
-  if (sc.inletPressure != 0 || sc.poiseuille[0] > 0 || sc.inflow) groups.push_back({sc.inlet, "-fluid_inlet", 2, conditions});
+  groups.push_back({opt.region, "-fluid_region", 3, RegionsRole});
+  for (const auto &g : SplitList(opt.noslip)) groups.push_back({g.substr(0, g.find(':')), "-fluid_noslip", 2, conditions});
+  if (opt.inletPressure != 0 || opt.poiseuille[0] > 0 || opt.inflow) groups.push_back({opt.inlet, "-fluid_inlet", 2, conditions});
   /* the outlet's conditions need it; a stress-free outlet under a pressure or inflow only has its flux reported */
-  const bool outletNeeded = sc.poiseuille[0] > 0 || sc.mms;
-  if (outletNeeded || sc.inletPressure != 0 || sc.inflow) groups.push_back({sc.outlet, "-fluid_outlet", 2, conditions, !outletNeeded});
+  const bool outletNeeded = opt.poiseuille[0] > 0 || sc.mms;
+  if (outletNeeded || opt.inletPressure != 0 || opt.inflow) groups.push_back({opt.outlet, "-fluid_outlet", 2, conditions, !outletNeeded});
 }
 
 PetscErrorCode FluidBlock::AddFields(DM dm)
 {
   PetscFunctionBegin;
-  PetscCall(AddLagrangeField(dm, "velocity", sc.fluidRegion, 3, 2, &velocity));
-  PetscCall(AddLagrangeField(dm, "pressure", sc.fluidRegion, 1, 1, &pressure));
-  flow.kind = sc.mmsFlow, flow.rho = sc.rhoFluid, flow.mu = sc.muFluid, flow.ramp = sc.mmsRamp, flow.dynamic = sc.Dynamic();
+  PetscCall(AddLagrangeField(dm, "velocity", opt.region, 3, 2, &velocity));
+  PetscCall(AddLagrangeField(dm, "pressure", opt.region, 1, 1, &pressure));
+  flow.kind = opt.mmsFlow, flow.rho = opt.rho, flow.mu = opt.mu, flow.ramp = opt.mmsRamp, flow.dynamic = sc.Dynamic();
   flow.motion = geometry && !geometry->Coupled() ? &geometry->motion : nullptr;
   PetscFunctionReturn(0);
 }
@@ -53,12 +100,12 @@ PetscErrorCode FluidBlock::AddFields(DM dm)
 PetscErrorCode FluidBlock::AddConditions(DM dm, Conditions &list)
 {
   PetscFunctionBegin;
-  if (sc.inflow) PetscCall(AddDirichlet(dm, list, sc.inlet, velocity, "-fluid_inlet", sc.inflowVelocity)); /* first: the no-slip rim wins */
-  PetscCall(AddDirichlet(dm, list, sc.noslip, velocity, "-fluid_noslip"));
+  if (opt.inflow) PetscCall(AddDirichlet(dm, list, opt.inlet, velocity, "-fluid_inlet", opt.inflowVelocity)); /* first: the no-slip rim wins */
+  PetscCall(AddDirichlet(dm, list, opt.noslip, velocity, "-fluid_noslip"));
   if (sc.mms) {
     Condition      c;
     const FlowMMS *m = &flow;
-    PetscCall(MMSDirichletFaces(sc, dm, &c.label));
+    PetscCall(MMSDirichletFaces(opt, dm, &c.label));
     c.name = "-mms (the manufactured velocity on the boundary but the outlet)", c.field = velocity;
     c.value = [m](const PetscReal x[3], PetscReal t, PetscScalar *v) { FlowMMSVelocityBC(3, t, x, 3, v, (void *)m); };
     list.push_back(c);
@@ -72,11 +119,11 @@ PetscErrorCode FluidBlock::SetUp(DM dm)
   DMLabel     region;
 
   PetscFunctionBegin;
-  PetscCall(GetRegionLabel(dm, sc.fluidRegion, &region));
+  PetscCall(GetRegionLabel(dm, opt.region, &region));
   PetscCall(FieldCellsCreate(dm, region, velocity, fb.velocity));
   PetscCall(FieldCellsCreate(dm, region, pressure, fb.pressure));
   fb.mesh = geometry ? &geometry->forms.cells : nullptr;
-  fb.rho = sc.rhoFluid, fb.mu = sc.muFluid, fb.shapeDerivatives = sc.shapeDerivatives;
+  fb.rho = opt.rho, fb.mu = opt.mu, fb.shapeDerivatives = opt.shapeDerivatives;
   PetscCall(CreateP2Rule(5, fb.rule));
   PetscCall(CreateFaceRule(4, fb.faceRule));
   auto addTraction = [&](const char *group, Traction t) -> PetscErrorCode {
@@ -89,23 +136,23 @@ PetscErrorCode FluidBlock::SetUp(DM dm)
     fb.tractions.push_back(tg);
     PetscFunctionReturn(0);
   };
-  for (auto g : {std::make_pair(sc.inlet, &inletFaces), std::make_pair(sc.outlet, &outletFaces), std::make_pair(sc.interface, &interfaceFaces)}) { /* the fluxes a run reports */
+  for (auto g : {std::make_pair(opt.inlet, &inletFaces), std::make_pair(opt.outlet, &outletFaces)}) { /* the fluxes a run reports */
     DMLabel label;
     PetscCall(DMGetLabel(dm, g.first, &label));
     if (label) PetscCall(CellFacesCreate(dm, fb.velocity, label, *g.second));
   }
-  if (!sc.fluidProbes.empty()) PetscCall(ProbesCreate(PetscObjectComm((PetscObject)dm), fb.pressure, sc.fluidProbes, "-fluid_probes", probes));
+  if (!opt.probes.empty()) PetscCall(ProbesCreate(PetscObjectComm((PetscObject)dm), fb.pressure, opt.probes, "-fluid_probes", probes));
   if (sc.mms) {
     const FlowMMS *m = &flow;
-    PetscCall(addTraction(sc.outlet, [m](const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal tr[3]) { FlowMMSTraction(*m, x, n, t, tr); }));
+    PetscCall(addTraction(opt.outlet, [m](const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal tr[3]) { FlowMMSTraction(*m, x, n, t, tr); }));
     fb.force = [m](const PetscReal x[3], PetscReal t, PetscReal f[3]) { FlowMMSForce(*m, x, t, f); };
-  } else if (sc.poiseuille[0] > 0) { /* the exact flow's traction sigma n at both ends */
-    const Poiseuille p = {sc.poiseuille[0], sc.poiseuille[1], sc.poiseuille[2], sc.muFluid};
-    for (const char *g : {sc.inlet, sc.outlet}) PetscCall(addTraction(g, [p](const PetscReal x[3], const PetscReal n[3], PetscReal, PetscReal t[3]) { PoiseuilleTraction(p, x, n, t); }));
-  } else if (sc.inletPressure != 0) {
-    const PetscReal p = sc.inletPressure, until = sc.pulseEnd;
+  } else if (opt.poiseuille[0] > 0) { /* the exact flow's traction sigma n at both ends */
+    const Poiseuille p = {opt.poiseuille[0], opt.poiseuille[1], opt.poiseuille[2], opt.mu};
+    for (const char *g : {opt.inlet, opt.outlet}) PetscCall(addTraction(g, [p](const PetscReal x[3], const PetscReal n[3], PetscReal, PetscReal t[3]) { PoiseuilleTraction(p, x, n, t); }));
+  } else if (opt.inletPressure != 0) {
+    const PetscReal p = opt.inletPressure, until = opt.pulseEnd;
     const PetscBool steady = (PetscBool)!sc.Dynamic(); /* time is then the load fraction: continuation in p */
-    PetscCall(addTraction(sc.inlet, [p, until, steady](const PetscReal *, const PetscReal n[3], PetscReal time, PetscReal t[3]) {
+    PetscCall(addTraction(opt.inlet, [p, until, steady](const PetscReal *, const PetscReal n[3], PetscReal time, PetscReal t[3]) {
       const PetscReal pt = steady ? p * time : (until == 0 || time <= until + 1e-12 ? p : 0.0);
       for (int d = 0; d < 3; d++) t[d] = -pt * n[d];
     }));
@@ -143,7 +190,7 @@ std::string FluidBlock::InvertedCause() const
   char cause[256];
   if (!forms.inverted) return "";
   if (geometry && geometry->Coupled()) return "a cell of the moved fluid mesh inverted (J <= 0): the wall moved too far in one step for the harmonic extension of its displacement";
-  PetscSNPrintf(cause, sizeof(cause), "a cell of the moved fluid mesh inverted (J <= 0): the prescribed interface displacement is too large for its harmonic extension; reduce -geometry_amplitude (%g now)", (double)sc.geometryAmplitude);
+  PetscSNPrintf(cause, sizeof(cause), "a cell of the moved fluid mesh inverted (J <= 0): the prescribed interface displacement is too large for its harmonic extension; reduce -geometry_amplitude (%g now)", (double)geometry->opt.amplitude);
   return cause;
 }
 
@@ -180,7 +227,7 @@ static PetscErrorCode ReportArrivals(const Probes &probes, PetscReal level, RunR
 PetscErrorCode FluidBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
 {
   Errors     e, ep;
-  Poiseuille p = {sc.poiseuille[0], sc.poiseuille[1], sc.poiseuille[2], sc.muFluid};
+  Poiseuille p = {opt.poiseuille[0], opt.poiseuille[1], opt.poiseuille[2], opt.mu};
   PetscReal  in = 0, out = 0; /* fluxes through inlet and outlet */
 
   PetscFunctionBegin;
@@ -206,7 +253,7 @@ PetscErrorCode FluidBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
     PetscCall(ReportErrors("", e, report));
   }
   if (!probes.cell.empty()) report.series.push_back({"pressure", &probes});
-  if (!probes.cell.empty() && sc.inletPressure != 0) PetscCall(ReportArrivals(probes, sc.inletPressure / 2, report));
+  if (!probes.cell.empty() && opt.inletPressure != 0) PetscCall(ReportArrivals(probes, opt.inletPressure / 2, report));
   PetscFunctionReturn(0);
 }
 

@@ -14,13 +14,32 @@
 
 namespace fsi {
 
+/* The fluid's options (-fluid_*; ReadOptions lists them with their defaults). */
+struct FluidOptions {
+  char      region[64] = "fluid";
+  char      noslip[256] = "interface";     /* groups with u = 0 */
+  PetscReal rho = 1.0, mu = 0.03;          /* g/cm^3, poise */
+  PetscReal inletPressure = 0;             /* normal stress -p n on the inlet group (dyn/cm^2) */
+  PetscReal pulseEnd = 0;                  /* it acts while t <= pulseEnd (0: always) */
+  PetscReal inflowVelocity[3] = {0, 0, 0}; /* or a prescribed velocity there (cm/s) */
+  PetscBool inflow = PETSC_FALSE;
+  char      inlet[64] = "inlet", outlet[64] = "outlet";
+  PetscBool shapeDerivatives = PETSC_TRUE; /* on a moving mesh the Jacobian holds D_{d_f} R (exact Newton) */
+  std::vector<PetscReal> probes;           /* points (3 each) where the pressure is recorded */
+  PetscReal   poiseuille[3] = {0, 0, 0};   /* verification: R, L, pressure drop */
+  FlowMMSKind mmsFlow = FLOW_MMS_TRIGONOMETRIC;
+  PetscReal   mmsRamp = 0;
+};
+
 class FluidBlock : public Block {
 public:
-  /* `geometry`: the block whose d_f moves the mesh (nullptr: a fixed mesh) */
-  FluidBlock(const Scene &sc, const GeometryBlock *geometry) : sc(sc), geometry(geometry) {}
-  const char *Name() const override { return "fluid"; }
-  void        Groups(std::vector<GroupUse> &groups) const override;
-  std::string Region() const override { return sc.fluidRegion; }
+  explicit FluidBlock(const Scene &sc) : sc(sc) {}
+  const char    *Name() const override { return "fluid"; }
+  PetscErrorCode Wire(const std::vector<Block *> &scene) override;
+  PetscErrorCode ReadOptions(std::map<std::string, std::string> &problem) override;
+  PetscErrorCode Check() const override;
+  void           Groups(std::vector<GroupUse> &groups) const override;
+  std::string    Region() const override { return opt.region; }
 
   PetscErrorCode AddFields(DM dm) override;
   PetscErrorCode AddConditions(DM dm, Conditions &list) override;
@@ -34,22 +53,25 @@ public:
   PetscErrorCode InitialState(DM dm, Vec x, PetscBool *set) override;
 
   std::vector<PetscInt> SplitFields() const override { return {velocity, pressure}; }
+  PetscInt              SplitPlace() const override { return 2; } /* after the wall and the mesh that moves it */
 
   void           Output(std::vector<OutputPart> &parts) const override;
-  const char    *Headline(PetscInt *f) const override { return *f = velocity, "velocity"; }
+  void           Unknowns(std::vector<std::pair<std::string, PetscInt>> &u) const override { u.insert(u.end(), {{"fluid", velocity}, {"pressure", pressure}}); }
+  PetscBool      Summary(Headline *h) const override { return *h = {"velocity", velocity, "solution_norm"}, PETSC_TRUE; }
   std::string    InvertedCause() const override;
   PetscErrorCode AfterStep(DM dm, PetscInt step, PetscReal t, Vec x) override;
   PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) override;
 
+  FluidOptions          opt;
   PetscInt              velocity = -1, pressure = -1;
   FluidForms            forms;
-  FlowMMS               flow;                                    /* the manufactured flow's data */
-  std::vector<CellFace> inletFaces, outletFaces, interfaceFaces; /* the faces of the fluxes (empty: no such group) */
+  FlowMMS               flow;                    /* the manufactured flow's data */
+  std::vector<CellFace> inletFaces, outletFaces; /* the faces of the fluxes (empty: no such group) */
   Probes                probes;
 
 private:
   const Scene         &sc;
-  const GeometryBlock *geometry;
+  const GeometryBlock *geometry = nullptr; /* the block whose d_f moves the mesh (nullptr: a fixed mesh) */
 };
 
 } // namespace fsi

@@ -1,22 +1,48 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "block.h"
 #include "discretization/fields.h"
+#include "solver/options.h"
 #include "verification/errors.h"
 
 namespace fsi {
 
+PetscErrorCode GeometryBlock::Wire(const std::vector<Block *> &scene)
+{
+  fluid      = FindBlock<Block>(scene, "fluid");
+  coupled    = (PetscBool)(FindBlock<Block>(scene, "coupling") != nullptr);
+  movesFluid = (PetscBool)(fluid != nullptr);
+  return 0;
+}
+
+PetscErrorCode GeometryBlock::ReadOptions(std::map<std::string, std::string> &problem)
+{
+  GeometryOptions &o = opt;
+
+  PetscFunctionBegin;
+  PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "fsi_app: the geometry block (harmonic mesh motion)", nullptr);
+  const OptionReader r{PetscOptionsObject, problem};
+  if (fluid) PetscCall(PetscStrncpy(o.region, fluid->Region().c_str(), sizeof(o.region)));
+  else PetscCall(r.String("-fluid_region", "physical group of the fluid's cells, where the mesh moves", o.region, sizeof(o.region), PROBLEM));
+  PetscCall(r.String("-geometry_interface", "group where the fluid's mesh displacement is the structure's", o.interface, sizeof(o.interface), PROBLEM));
+  PetscCall(r.String("-geometry_slip", "groups where the mesh slides: the listed components are zero (planar ends: group:z)", o.slip, sizeof(o.slip), PROBLEM));
+  PetscCall(r.Real("-geometry_amplitude", "amplitude a of the prescribed interface displacement a s(t) (x^2 - y^2, -2xy, 0) (-physics geometry, -fluid_moving_mesh)", &o.amplitude, Any, PROBLEM));
+  PetscCall(r.Real("-geometry_ramp", "the prescribed interface displacement rises as s(t) = sin^2(pi t / 2T) over this time T (s); 0: at once", &o.ramp, NonNegative, PROBLEM));
+  PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
 void GeometryBlock::Groups(std::vector<GroupUse> &groups) const
 {
-  groups.push_back({sc.fluidRegion, "-fluid_region", 3, RegionsRole});
-  groups.push_back({sc.interface, "-geometry_interface", 2});
-  for (const auto &g : SplitList(sc.slip)) groups.push_back({g.substr(0, g.find(':')), "-geometry_slip", 2});
+  groups.push_back({opt.region, "-fluid_region", 3, RegionsRole});
+  groups.push_back({opt.interface, "-geometry_interface", 2});
+  for (const auto &g : SplitList(opt.slip)) groups.push_back({g.substr(0, g.find(':')), "-geometry_slip", 2});
 }
 
 PetscErrorCode GeometryBlock::AddFields(DM dm)
 {
   PetscFunctionBegin;
-  PetscCall(AddLagrangeField(dm, "geometry", sc.fluidRegion, 3, 2, &field));
-  motion = {sc.geometryAmplitude, sc.geometryRamp, sc.Dynamic()};
+  PetscCall(AddLagrangeField(dm, "geometry", opt.region, 3, 2, &field));
+  motion = {opt.amplitude, opt.ramp, sc.Dynamic()};
   PetscFunctionReturn(0);
 }
 
@@ -27,11 +53,11 @@ PetscErrorCode GeometryBlock::AddConditions(DM dm, Conditions &list)
     Condition               c;
     const PrescribedMotion *m = &motion;
     c.name = "the prescribed interface displacement (-geometry_interface)", c.field = field;
-    PetscCall(DMGetLabel(dm, sc.interface, &c.label));
+    PetscCall(DMGetLabel(dm, opt.interface, &c.label));
     c.value = [m](const PetscReal X[3], PetscReal t, PetscScalar *v) { PrescribedDisplacementBC(3, t, X, 3, v, (void *)m); };
     list.push_back(c);
   }
-  PetscCall(AddDirichlet(dm, list, sc.slip, field, "-geometry_slip"));
+  PetscCall(AddDirichlet(dm, list, opt.slip, field, "-geometry_slip"));
   PetscFunctionReturn(0);
 }
 
@@ -40,13 +66,13 @@ PetscErrorCode GeometryBlock::SetUp(DM dm)
   DMLabel region;
 
   PetscFunctionBegin;
-  PetscCall(GetRegionLabel(dm, sc.fluidRegion, &region));
+  PetscCall(GetRegionLabel(dm, opt.region, &region));
   PetscCall(FieldCellsCreate(dm, region, field, forms.cells));
   PetscCall(CreateP2Rule(2, forms.rule));
   if (coupled) {
     Condition             onInterface;
     std::vector<PetscInt> points;
-    PetscCall(DMGetLabel(dm, sc.interface, &onInterface.label));
+    PetscCall(DMGetLabel(dm, opt.interface, &onInterface.label));
     PetscCall(ConditionPoints(dm, onInterface, points));
     FieldCellsDropRows(forms.cells, points);
   }

@@ -14,15 +14,27 @@
 
 namespace fsi {
 
+/* The geometry's options (-geometry_*). It lives on the fluid's cells: -fluid_region, the fluid
+   block's when the scene has one. */
+struct GeometryOptions {
+  char      region[64]    = "fluid";
+  char      interface[64] = "interface";
+  char      slip[256]     = "inlet:z,outlet:z"; /* d . n = 0: the normal component of planar ends */
+  PetscReal amplitude     = 0.01;               /* of the prescribed interface displacement */
+  PetscReal ramp          = 0;                  /* it rises smoothly over this time (0: at once) */
+};
+
 class GeometryBlock : public Block {
 public:
-  /* coupled: the interface rows are the coupling's; movesFluid: a fluid block moves with it */
-  GeometryBlock(const Scene &sc, PetscBool coupled, PetscBool movesFluid) : sc(sc), coupled(coupled), movesFluid(movesFluid) {}
+  explicit GeometryBlock(const Scene &sc) : sc(sc) {}
   ~GeometryBlock() override { GeometryPredictorDestroy(predictor); }
-  const char *Name() const override { return "geometry"; }
-  void        Groups(std::vector<GroupUse> &groups) const override;
-  std::string Region() const override { return sc.fluidRegion; }
-  PetscBool   Coupled() const { return coupled; }
+  const char    *Name() const override { return "geometry"; }
+  PetscErrorCode Wire(const std::vector<Block *> &scene) override;
+  PetscErrorCode ReadOptions(std::map<std::string, std::string> &problem) override;
+  void           Groups(std::vector<GroupUse> &groups) const override;
+  std::string    Region() const override { return opt.region; }
+  /* the interface rows are the coupling's */
+  PetscBool      Coupled() const { return coupled; }
 
   PetscErrorCode AddFields(DM dm) override;
   PetscErrorCode AddConditions(DM dm, Conditions &list) override;
@@ -36,20 +48,24 @@ public:
   PetscErrorCode Predict(PetscReal t, Vec x) override;
 
   std::vector<PetscInt> SplitFields() const override { return {field}; }
+  PetscInt              SplitPlace() const override { return 1; } /* the mesh follows the wall, the fluid the mesh */
   PetscBool             Linear() const override { return PETSC_TRUE; }
   PetscBool             HasEnergy() const override { return PETSC_TRUE; }
 
   void           Output(std::vector<OutputPart> &parts) const override;
-  const char    *Headline(PetscInt *f) const override { return *f = field, "displacement"; }
+  void           Unknowns(std::vector<std::pair<std::string, PetscInt>> &u) const override { u.push_back({"geometry", field}); }
+  PetscBool      Summary(Headline *h) const override { return *h = {"displacement", field, "displacement_norm"}, PETSC_TRUE; }
   PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) override;
 
+  GeometryOptions  opt;
   PetscInt         field = -1; /* d_f */
   GeometryForms    forms;
   PrescribedMotion motion;     /* the interface displacement when it is prescribed */
 
 private:
   const Scene      &sc;
-  PetscBool         coupled, movesFluid;
+  PetscBool         coupled = PETSC_FALSE, movesFluid = PETSC_FALSE; /* movesFluid: a fluid block moves with it */
+  const Block      *fluid   = nullptr;
   GeometryPredictor predictor; /* a fluid on a prescribed moving mesh: the step's mesh motion first */
 };
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "harmonic.h"
+#include "discretization/ale_map.h"
 
 namespace fsi {
 
@@ -15,12 +16,11 @@ PetscErrorCode GeometryResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
     PetscReal           de[30], re[30] = {0};
     Gather(gb.cells, k, x, de);
     for (PetscInt q = 0; q < gb.rule.nq; q++) {
-      PetscReal dN[10][3], G[3][3] = {{0}};
-      P2Gradients(g, &gb.rule.lambda[4 * q], dN);
+      PetscReal       dN[10][3], G[3][3] = {{0}};
+      const PetscReal w = ReferenceGradients(g, gb.rule, q, dN);
       for (int a = 0; a < 10; a++)
         for (int i = 0; i < 3; i++)
           for (int j = 0; j < 3; j++) G[i][j] += de[3 * a + i] * dN[a][j];
-      const PetscReal w = gb.rule.w[q] * g.detE;
       for (int a = 0; a < 10; a++)
         for (int i = 0; i < 3; i++) re[3 * a + i] += w * (G[i][0] * dN[a][0] + G[i][1] * dN[a][1] + G[i][2] * dN[a][2]);
     }
@@ -38,9 +38,8 @@ PetscErrorCode GeometryJacobian(void *ctx, const PetscScalar *, Mat P)
     const CellGeometry &g = gb.cells.geom[k];
     PetscReal           K[900] = {0};
     for (PetscInt q = 0; q < gb.rule.nq; q++) {
-      PetscReal dN[10][3];
-      P2Gradients(g, &gb.rule.lambda[4 * q], dN);
-      const PetscReal w = gb.rule.w[q] * g.detE;
+      PetscReal       dN[10][3];
+      const PetscReal w = ReferenceGradients(g, gb.rule, q, dN);
       for (int a = 0; a < 10; a++)
         for (int b = 0; b < 10; b++) {
           const PetscReal v = w * (dN[a][0] * dN[b][0] + dN[a][1] * dN[b][1] + dN[a][2] * dN[b][2]);

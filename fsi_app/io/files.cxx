@@ -27,6 +27,23 @@ PetscErrorCode CheckOnRankZero(MPI_Comm comm, PetscErrorCode code, const std::fu
   SETERRQ(comm, code, "%s", sentence.c_str());
 }
 
+PetscErrorCode CheckOnAnyRank(MPI_Comm comm, PetscErrorCode code, const std::string &sentence)
+{
+  PetscMPIInt rank, first, mine;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  mine = sentence.empty() ? PETSC_MPI_INT_MAX : rank;
+  PetscCallMPI(MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, comm));
+  if (first == PETSC_MPI_INT_MAX) PetscFunctionReturn(0);
+  int         len = (int)sentence.size();
+  std::string s   = sentence;
+  PetscCallMPI(MPI_Bcast(&len, 1, MPI_INT, first, comm));
+  s.resize(len);
+  PetscCallMPI(MPI_Bcast(&s[0], len, MPI_CHAR, first, comm));
+  SETERRQ(comm, code, "%s", s.c_str());
+}
+
 /* Why `path` cannot be written, or "" if it can. */
 static std::string Unwritable(const std::string &path, bool regular)
 {

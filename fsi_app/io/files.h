@@ -14,6 +14,9 @@ namespace fsi {
 /* Run `check` on rank 0 of comm; a nonempty sentence it returns is the error (code `code`)
    of every rank. */
 PetscErrorCode CheckOnRankZero(MPI_Comm comm, PetscErrorCode code, const std::function<std::string()> &check);
+/* The same for a check every rank makes on its own part (`sentence`: "" if it passed): the
+   first rank's sentence stops every rank, printed once. */
+PetscErrorCode CheckOnAnyRank(MPI_Comm comm, PetscErrorCode code, const std::string &sentence);
 
 /* The run can write `path` (the value of `option`): its directory exists and takes new files,
    and the file, if it is there, is a writable file, and a regular one when `regular` (a file the

@@ -12,8 +12,9 @@
 
 namespace fsi {
 
-/* Nodes of the element types fsi_app reads: points, lines, triangles, linear tetrahedra. */
-static const std::map<long long, size_t> ElementNodes = {{15, 1}, {1, 2}, {2, 3}, {4, 4}};
+/* Nodes of the element types fsi_app reads: points, lines, triangles, tetrahedra, first order
+   and second order (gmsh -order 2: 3-node lines, 6-node triangles, 10-node tetrahedra). */
+static const std::map<long long, size_t> ElementNodes = {{15, 1}, {1, 2}, {2, 3}, {4, 4}, {8, 3}, {9, 6}, {11, 10}};
 
 static bool Integer(const std::string &t, long long &x)
 {
@@ -38,9 +39,10 @@ struct GmshScan {
   bool                                      partial = false; /* the last line read ends without a newline */
   std::set<std::pair<long long, long long>> entities;        /* (dimension, tag) of $Entities */
   bool                                      hasEntities = false;
-  long long                                 nodeMin = 1, tetrahedra = 0;
+  long long                                 nodeMin = 1, tetrahedra = 0, curved = 0; /* first- and second-order tetrahedra */
   std::vector<bool>                         node; /* node[tag - nodeMin]: defined in $Nodes */
   std::vector<double>                       xyz;  /* its coordinates, 3 per tag */
+  std::vector<double>                      *bent = nullptr; /* the curved edges of second-order tetrahedra (CurvedEdge: 9 each), if asked */
 
   explicit GmshScan(const std::string &f) : file(f), in(f) { }
 
@@ -90,6 +92,26 @@ struct GmshScan {
       for (int b = a + 1; b < 4; b++) longest = std::max(longest, std::hypot(p[a][0] - p[b][0], p[a][1] - p[b][1], p[a][2] - p[b][2]));
     const double vol6 = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) + e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
     return std::fabs(vol6) <= 1e-12 * longest * longest * longest;
+  }
+
+  /* The edges of a second-order tetrahedron (node tags t[0..9]) whose node is off their midpoint:
+     each edge node belongs to the vertex pair whose midpoint is nearest (the file's node order
+     is not assumed), and gmsh places the nodes of straight edges at their midpoints. */
+  void Bent(const long long *t) const
+  {
+    for (int k = 4; k < 10; k++) {
+      const double *x = &xyz[3 * (t[k] - nodeMin)], *a = nullptr, *b = nullptr;
+      double        best = INFINITY;
+      for (int i = 0; i < 4; i++)
+        for (int j = i + 1; j < 4; j++) {
+          const double *p = &xyz[3 * (t[i] - nodeMin)], *q = &xyz[3 * (t[j] - nodeMin)];
+          const double  d = std::hypot(x[0] - (p[0] + q[0]) / 2, x[1] - (p[1] + q[1]) / 2, x[2] - (p[2] + q[2]) / 2);
+          if (d < best) best = d, a = p, b = q;
+        }
+      if (best <= 1e-12 * std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2])) continue;
+      if (std::lexicographical_compare(b, b + 3, a, a + 3)) std::swap(a, b);
+      bent->insert(bent->end(), a, a + 3), bent->insert(bent->end(), b, b + 3), bent->insert(bent->end(), x, x + 3);
+    }
   }
 
   std::string Format();
@@ -188,14 +210,17 @@ std::string GmshScan::Elements()
     if (!Integers(4, h) || h[3] < 0) return At("an element block starts with: entityDim entityTag elementType numElementsInBlock");
     if (const std::string s = Entity(h[0], h[1]); !s.empty()) return s;
     const auto type = ElementNodes.find(h[2]);
-    if (type == ElementNodes.end()) return At("element type " + std::to_string(h[2]) + ": fsi_app reads linear tetrahedra (type 4) with their triangles (2), lines (1) and points (15); mesh with gmsh -order 1");
+    if (type == ElementNodes.end()) return At("element type " + std::to_string(h[2]) + ": fsi_app reads tetrahedra of first order (type 4, with triangles 2 and lines 1) or second order (11, with 9 and 8), and points (15); mesh with gmsh -order 1 or -order 2");
     if (h[2] == 4) tetrahedra += h[3];
+    if (h[2] == 11) curved += h[3];
+    if (tetrahedra && curved) return At("the file has tetrahedra of first order (type 4) and of second order (11): mesh it with one -order");
     for (long long i = 0, n = h[3]; i < n; i++) {
       if (!Next()) return Cut();
       if (!Integers(1 + type->second, e) || tok.size() != 1 + type->second) return At("expected an element tag and its " + std::to_string(type->second) + " nodes, found '" + line + "'");
       for (size_t k = 1; k <= type->second; k++)
         if (!Defined(e[k])) return At("element " + tok[0] + " names node " + tok[k] + ", which $Nodes does not define");
-      if (h[2] == 4 && Flat(&e[1])) return At("tetrahedron " + tok[0] + " (nodes " + tok[1] + " " + tok[2] + " " + tok[3] + " " + tok[4] + ") has no volume: its nodes lie in a plane");
+      if (h[2] == 11 && bent) Bent(&e[1]);
+      if ((h[2] == 4 || h[2] == 11) && Flat(&e[1])) return At("tetrahedron " + tok[0] + " (nodes " + tok[1] + " " + tok[2] + " " + tok[3] + " " + tok[4] + ") has no volume: its nodes lie in a plane");
     }
     if ((seen += h[3]) > total) return At("the element blocks hold more elements than the $Elements header announces (" + std::to_string(total) + ")");
   }
@@ -212,9 +237,10 @@ std::string GmshScan::Skip()
   return Cut();
 }
 
-std::string GmshFileProblem(const std::string &file)
+std::string GmshFileProblem(const std::string &file, int *order, std::vector<double> *bent)
 {
   GmshScan    s(file);
+  s.bent = bent;
   std::string why;
   bool        nodes = false, elements = false;
 
@@ -233,7 +259,8 @@ std::string GmshFileProblem(const std::string &file)
   }
   if (!why.empty()) return why;
   if (!nodes || !elements) return "mesh file '" + file + "' has no " + (nodes ? "$Elements" : "$Nodes") + " section: the file is truncated or not a mesh";
-  if (!s.tetrahedra) return "mesh file '" + file + "' has no tetrahedra (element type 4): fsi_app solves on 3-D tetrahedral meshes";
+  if (!s.tetrahedra && !s.curved) return "mesh file '" + file + "' has no tetrahedra (element type 4 or 11): fsi_app solves on 3-D tetrahedral meshes";
+  if (order) *order = s.curved ? 2 : 1;
   return "";
 }
 

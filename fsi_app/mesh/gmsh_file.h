@@ -6,14 +6,18 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace fsi {
 
 /* Why `file` cannot be the mesh, as a sentence that names the file and the line; "" if it can.
    It can if it is gmsh format 4.1 ASCII (what scripts/make-meshes writes; PETSc 3.18 mislabels
    the faces of 2.2 files), its node blocks give distinct tags and finite coordinates, its
-   element blocks hold linear tetrahedra, triangles, lines or points that name nodes of $Nodes,
-   every block names an entity of $Entities, it has a tetrahedron, and no section is cut off. */
-std::string GmshFileProblem(const std::string &file);
+   element blocks hold tetrahedra, triangles, lines (all of first or all of second order) or
+   points that name nodes of $Nodes, every block names an entity of $Entities, it has a
+   tetrahedron, and no section is cut off. *order (if asked) is then the elements' order, and
+   *bent (if asked) the edges of second-order tetrahedra that are curved: 9 numbers each, the
+   edge's two vertices (the smaller first, lexicographically) and its node. */
+std::string GmshFileProblem(const std::string &file, int *order = nullptr, std::vector<double> *bent = nullptr);
 
 } // namespace fsi

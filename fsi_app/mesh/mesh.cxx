@@ -5,6 +5,8 @@
 #include <petscsf.h>
 #include <metis.h>
 #include <algorithm>
+#include <array>
+#include <map>
 
 namespace fsi {
 
@@ -112,14 +114,76 @@ static PetscErrorCode DistributeWithMetis(DM *dm, const std::vector<std::string>
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vector<GroupUse> &uses, const std::vector<std::string> &regions, DM *dm)
+/* The curved edges: (vertex a, vertex b) -> the edge's node, a < b lexicographically. */
+using CurvedEdges = std::map<std::array<PetscReal, 6>, std::array<PetscReal, 3>>;
+static const char CurvedEdgesKey[] = "fsi_curved_edges";
+
+static PetscErrorCode DestroyCurvedEdges(void *ctx)
 {
-  PetscBool set;
+  delete (CurvedEdges *)ctx;
+  return 0;
+}
+
+/* Every rank gets the curved edges rank 0 read (boundary edges on curved surfaces: few). */
+static PetscErrorCode AttachCurvedEdges(MPI_Comm comm, std::vector<double> &bent, DM dm)
+{
+  PetscInt          n = (PetscInt)bent.size();
+  PetscContainer    c;
+  auto             *edges = new CurvedEdges;
 
   PetscFunctionBegin;
-  PetscCall(CheckOnRankZero(comm, PETSC_ERR_FILE_UNEXPECTED, [&]() { return GmshFileProblem(file); })); /* where PETSc reads it */
+  PetscCallMPI(MPI_Bcast(&n, 1, MPIU_INT, 0, comm));
+  bent.resize(n);
+  PetscCallMPI(MPI_Bcast(bent.data(), (PetscMPIInt)n, MPI_DOUBLE, 0, comm));
+  for (PetscInt k = 0; k < n; k += 9) {
+    std::array<PetscReal, 6> key;
+    for (int i = 0; i < 6; i++) key[i] = bent[k + i];
+    (*edges)[key] = {bent[k + 6], bent[k + 7], bent[k + 8]};
+  }
+  PetscCall(PetscContainerCreate(comm, &c));
+  PetscCall(PetscContainerSetPointer(c, edges));
+  PetscCall(PetscContainerSetUserDestroy(c, DestroyCurvedEdges));
+  PetscCall(PetscObjectCompose((PetscObject)dm, CurvedEdgesKey, (PetscObject)c));
+  PetscCall(PetscContainerDestroy(&c));
+  PetscFunctionReturn(0);
+}
+
+PetscBool MeshIsCurved(DM dm)
+{
+  PetscObject c = nullptr;
+  PetscObjectQuery((PetscObject)dm, CurvedEdgesKey, &c);
+  return (PetscBool)(c != nullptr);
+}
+
+PetscBool MeshEdgeNode(DM dm, const PetscReal a[3], const PetscReal b[3], PetscReal x[3])
+{
+  PetscObject  c     = nullptr;
+  CurvedEdges *edges = nullptr;
+  PetscObjectQuery((PetscObject)dm, CurvedEdgesKey, &c);
+  if (!c) return PETSC_FALSE;
+  PetscContainerGetPointer((PetscContainer)c, (void **)&edges);
+  const bool               swap = std::lexicographical_compare(b, b + 3, a, a + 3);
+  std::array<PetscReal, 6> key;
+  for (int i = 0; i < 3; i++) key[i] = swap ? b[i] : a[i], key[3 + i] = swap ? a[i] : b[i];
+  const auto e = edges->find(key);
+  if (e == edges->end()) return PETSC_FALSE;
+  for (int i = 0; i < 3; i++) x[i] = e->second[i];
+  return PETSC_TRUE;
+}
+
+PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, PetscInt order, const std::vector<GroupUse> &uses, const std::vector<std::string> &regions, DM *dm)
+{
+  PetscBool           set;
+  int                 fileOrder = 1;
+  std::vector<double> bent;
+
+  PetscFunctionBegin;
+  PetscCall(CheckOnRankZero(comm, PETSC_ERR_FILE_UNEXPECTED, [&]() { return GmshFileProblem(file, &fileOrder, order == 1 ? nullptr : &bent); })); /* where PETSc reads it */
+  PetscCallMPI(MPI_Bcast(&fileOrder, 1, MPI_INT, 0, comm));
+  PetscCheck(order != 2 || fileOrder == 2, comm, PETSC_ERR_ARG_INCOMP, "-mesh_order 2: mesh file '%s' has first-order cells only; make it with gmsh -order 2 (scripts/make-meshes NAME LEVEL 2)", file.c_str());
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-dm_plex_gmsh_use_regions", &set));
   if (!set) PetscCall(PetscOptionsSetValue(nullptr, "-dm_plex_gmsh_use_regions", "true")); /* labels named by physical groups */
+  PetscCall(PetscOptionsSetValue(nullptr, "-dm_plex_gmsh_highorder", "false")); /* the vertices; the curved edges below */
   PetscCall(DMPlexCreateGmshFromFile(comm, file.c_str(), PETSC_TRUE, dm));
   PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));
   static const char *const holds[] = {"", "", "faces", "cells"};
@@ -136,6 +200,7 @@ PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vecto
                  v.group.c_str(), u.role.c_str());
   }
   PetscCall(DistributeWithMetis(dm, regions));
+  if (fileOrder == 2 && order != 1) PetscCall(AttachCurvedEdges(comm, bent, *dm));
   PetscFunctionReturn(0);
 }
 

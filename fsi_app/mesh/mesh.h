@@ -23,8 +23,17 @@ struct GroupUse {
    `uses` exists and holds entities of the dimension its option needs, and that options of one
    role name different groups, and distribute the cells over the ranks of `comm` (METIS on the
    cell dual graph, balancing the cells of each of `regions` when there are several). Errors
-   name the file, the line or the option and group, and what the file has. */
-PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, const std::vector<GroupUse> &uses, const std::vector<std::string> &regions, DM *dm);
+   name the file, the line or the option and group, and what the file has. `order` is the
+   cells' geometry (-mesh_order): 2 curved by the file's second-order nodes (which it must
+   have), 1 straight whatever the file has, 0 as the file is. */
+PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, PetscInt order, const std::vector<GroupUse> &uses, const std::vector<std::string> &regions, DM *dm);
+
+/* The node of a curved edge of dm (the file's second-order node, LoadMesh with order != 1),
+   found by its vertices' coordinates a and b; false for a straight edge. PETSc keeps the
+   vertices only (its own second-order reader stores cellwise coordinates, which the vertex
+   loops here cannot use), so the curved edges ride beside the DM. */
+PetscBool MeshEdgeNode(DM dm, const PetscReal a[3], const PetscReal b[3], PetscReal x[3]);
+PetscBool MeshIsCurved(DM dm);
 
 /* Call f(point) for every point of `label` whose value is in `values` (every value if empty). */
 template <class F>

@@ -3,9 +3,9 @@
    about itself — its fields, essential conditions, cells, rows of the residual and Jacobian,
    its split of the preconditioner, its output and its verification. A scene is a list of
    blocks (blocks.h); the application only sums them. The stages are called in this order:
-   Groups (before the mesh is read), AddFields, AddConditions (every field exists), SetUp (the
-   section exists), then per step SetTime, Predict, residuals and Jacobians, AfterStep; Results
-   at the end. */
+   Wire (every block exists), ReadOptions, Check, Groups (before the mesh is read), AddFields,
+   AddConditions (every field exists), SetUp (the section exists), then per step SetTime,
+   Predict, residuals and Jacobians, AfterStep; Results at the end. */
 #pragma once
 
 #include "discretization/cells.h"
@@ -15,6 +15,7 @@
 #include "solver/sparsity.h"
 #include "solver/time_history.h"
 #include <petscsnes.h>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -35,10 +36,26 @@ struct OutputPart {
 /* The role of -structure_region and -fluid_region (GroupUse): the two must be different groups. */
 inline const char *const RegionsRole = "regions of the wall and the fluid";
 
+/* What a run's summary line reports: the largest value of a field, and the solution's norm
+   under the name `norm`. */
+struct Headline {
+  std::string name;
+  PetscInt    field;
+  std::string norm;
+};
+
 class Block {
 public:
   virtual ~Block() = default;
   virtual const char *Name() const = 0;
+  /* The scene's other blocks, before any reads its options: a block finds the ones it works
+     with (the fluid moves with the geometry; the coupling ties three). */
+  virtual PetscErrorCode Wire(const std::vector<Block *> &scene) { return 0; }
+  /* Its options, read and checked once under its own -help title (the blocks in the scene's
+     order); the ones that define the problem go into `problem`. */
+  virtual PetscErrorCode ReadOptions(std::map<std::string, std::string> &problem) = 0;
+  /* Its options fit those of the blocks it works with (every block has read its own). */
+  virtual PetscErrorCode Check() const { return 0; }
   /* The mesh groups its options name (checked when the mesh is read), and its region ("": none,
      or the whole mesh): the partition balances the cells of every region. */
   virtual void        Groups(std::vector<GroupUse> &groups) const = 0;
@@ -61,9 +78,11 @@ public:
   /* The state at t = 0, held since t = -infinity (global x is zero on entry); *set if it is not zero. */
   virtual PetscErrorCode InitialState(DM dm, Vec x, PetscBool *set) { return *set = PETSC_FALSE, 0; }
 
-  /* Its part of PCFIELDSPLIT: these fields, in the split of this name (blocks may share one). */
+  /* Its part of PCFIELDSPLIT: these fields, in the split of this name (blocks may share one),
+     and the split's place in the multiplicative composition (lower first; the owner's counts). */
   virtual std::vector<PetscInt> SplitFields() const = 0;
   virtual const char           *SplitName() const { return Name(); }
+  virtual PetscInt              SplitPlace() const { return 0; }
   /* Linear rows (a dynamic scene of linear blocks factors its operator once); rows that are
      the gradient of an energy (the critical-point line search applies). */
   virtual PetscBool Linear() const { return PETSC_FALSE; }
@@ -76,12 +95,23 @@ public:
   virtual SplitSetUp SetUpPolicy() const { return SETUP_EVERY_NEWTON; }
 
   virtual void Output(std::vector<OutputPart> &parts) const {}
-  /* The field a run's summary line reports the largest value of ("displacement", "velocity"). */
-  virtual const char *Headline(PetscInt *field) const { return nullptr; }
+  /* Its unknowns as the run reports them: (name, field). */
+  virtual void Unknowns(std::vector<std::pair<std::string, PetscInt>> &u) const = 0;
+  /* The summary line's field (the first block's that has one). */
+  virtual PetscBool Summary(Headline *h) const { return PETSC_FALSE; }
   /* Why the last residual had no value (an inverted cell), "" if it had. */
   virtual std::string InvertedCause() const { return ""; }
   virtual PetscErrorCode AfterStep(DM dm, PetscInt step, PetscReal t, Vec x) { return 0; }
   virtual PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) { return 0; }
 };
+
+/* The block named `name` among `scene`, of type B (nullptr: the scene has none). */
+template <class B>
+B *FindBlock(const std::vector<Block *> &scene, const char *name)
+{
+  for (Block *b : scene)
+    if (std::string(b->Name()) == name) return dynamic_cast<B *>(b);
+  return nullptr;
+}
 
 } // namespace fsi

@@ -5,11 +5,6 @@
 
 namespace fsi {
 
-static void PointOf(const CellGeometry &g, const PetscReal l[4], PetscReal x[3])
-{
-  for (int d = 0; d < 3; d++) x[d] = l[0] * g.x[0][d] + l[1] * g.x[1][d] + l[2] * g.x[2][d] + l[3] * g.x[3][d];
-}
-
 static void Cross(const PetscReal a[3], const PetscReal b[3], PetscReal c[3])
 {
   c[0] = a[1] * b[2] - a[2] * b[1], c[1] = a[2] * b[0] - a[0] * b[2], c[2] = a[0] * b[1] - a[1] * b[0];
@@ -29,7 +24,7 @@ static void FacePoint(const StructureForms &sb, const CellGeometry &g, const Cel
   for (int d = 0; d < 3; d++) {
     ts[d] = tt[d] = 0;
     for (int a = 0; a < 10; a++) {
-      const PetscReal X = a < 4 ? g.x[a][d] : (g.x[EdgeVertex[a - 4][0]][d] + g.x[EdgeVertex[a - 4][1]][d]) / 2;
+      const PetscReal X = a < 4 ? g.x[a][d] : (g.x[EdgeVertex[a - 4][0]][d] + g.x[EdgeVertex[a - 4][1]][d]) / 2 + (g.curved ? g.bend[3 * a + d] : 0.0);
       const PetscReal y = X + (sb.follower ? de[3 * a + d] : 0.0);
       ts[d] += dN[a][0] * y, tt[d] += dN[a][1] * y;
     }
@@ -70,14 +65,34 @@ static void PressureTangent(const StructureForms &sb, const CellFace &f, const P
   }
 }
 
-/* The law's parameters at a reference point: the fibre directions of the arterial wall. */
-static void PointParameters(const StructureForms &sb, const CellGeometry &g, const PetscReal l[4], PetscReal p[MATERIAL_MAX_PARAM])
+/* The law's parameters at reference point X: the fibre directions of the arterial wall. */
+static void PointParameters(const StructureForms &sb, const PetscReal X[3], PetscReal p[MATERIAL_MAX_PARAM])
 {
   for (int k = 0; k < MATERIAL_MAX_PARAM; k++) p[k] = sb.param[k];
-  if (sb.fibreAngle >= 0) {
-    PetscReal xq[3];
-    PointOf(g, l, xq);
-    ArterialFibres(xq, sb.fibreAngle, &p[ARTERIAL_FIBRES]);
+  if (sb.fibreAngle >= 0) ArterialFibres(X, sb.fibreAngle, &p[ARTERIAL_FIBRES]);
+}
+
+/* The rule of cell g: a curved cell's integrands are rational in l, and take a rule of higher
+   degree than the straight cell's polynomials. */
+static const P2Rule &CellRule(const StructureForms &sb, const CellGeometry &g)
+{
+  return g.curved ? sb.curvedRule : sb.rule;
+}
+
+/* The consistent mass matrix of cell g: the reference one times |det E|, or by quadrature on a
+   curved cell. */
+static void CellMass(const StructureForms &sb, const CellGeometry &g, PetscReal M[100])
+{
+  if (!g.curved) {
+    for (int k = 0; k < 100; k++) M[k] = g.detE * sb.mass[k];
+    return;
+  }
+  for (int k = 0; k < 100; k++) M[k] = 0;
+  for (PetscInt q = 0; q < sb.curvedRule.nq; q++) {
+    PetscReal       dN[10][3], X[3];
+    const PetscReal w = ReferenceGradients(g, sb.curvedRule, q, dN, X), *N = &sb.curvedRule.N[10 * q];
+    for (int a = 0; a < 10; a++)
+      for (int b = 0; b < 10; b++) M[a * 10 + b] += w * N[a] * N[b];
   }
 }
 
@@ -107,25 +122,24 @@ PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f
         Gather(sb.cells, k, past[j], y);
         for (int i = 0; i < 30; i++) acc[i] += sb.history->second[j + 1] * y[i];
       }
+      PetscReal M[100];
+      CellMass(sb, g, M);
       for (int a = 0; a < 10; a++)
         for (int b = 0; b < 10; b++)
-          for (int i = 0; i < 3; i++) re[3 * a + i] += inertia * g.detE * sb.mass[a * 10 + b] * acc[3 * b + i];
+          for (int i = 0; i < 3; i++) re[3 * a + i] += inertia * M[a * 10 + b] * acc[3 * b + i];
     }
-    for (PetscInt q = 0; q < sb.rule.nq; q++) {
-      const PetscReal *l = &sb.rule.lambda[4 * q], *N = &sb.rule.N[10 * q], wq = sb.rule.w[q] * g.detE;
-      PetscReal        dN[10][3], F[9], P[9], b[3] = {0, 0, 0}, p[MATERIAL_MAX_PARAM];
-      P2Gradients(g, l, dN);
+    const P2Rule &rule = CellRule(sb, g);
+    for (PetscInt q = 0; q < rule.nq; q++) {
+      const PetscReal *N = &rule.N[10 * q];
+      PetscReal        dN[10][3], X[3], F[9], P[9], b[3] = {0, 0, 0}, p[MATERIAL_MAX_PARAM];
+      const PetscReal  wq = ReferenceGradients(g, rule, q, dN, X);
       if (DeformationGradient(de, dN, F) <= 0 && sb.law.finiteStrain) { /* inverted: no stress exists, say so below */
         inverted++;
         continue;
       }
-      PointParameters(sb, g, l, p);
+      PointParameters(sb, X, p);
       sb.law.stress(F, p, P);
-      if (sb.mms) {
-        PetscReal xq[3];
-        PointOf(g, l, xq);
-        MMSBodyForce(xq, sb.mms, sb.law.tangent, p, b);
-      }
+      if (sb.mms) MMSBodyForce(X, sb.mms, sb.law.tangent, p, b);
       for (int i = 0; i < 3; i++) b[i] += sb.load * sb.bodyForce[i];
       for (int a = 0; a < 10; a++)
         for (int i = 0; i < 3; i++) re[3 * a + i] += wq * (P[i * 3] * dN[a][0] + P[i * 3 + 1] * dN[a][1] + P[i * 3 + 2] * dN[a][2] - b[i] * N[a]);
@@ -168,16 +182,19 @@ PetscErrorCode StructureJacobian(void *ctx, const PetscScalar *x, Mat P)
     const CellGeometry &g = sb.cells.geom[k];
     PetscReal           de[30], K[900] = {0};
     Gather(sb.cells, k, x, de);
-    if (mass)
+    if (mass) {
+      PetscReal M[100];
+      CellMass(sb, g, M);
       for (int a = 0; a < 10; a++)
         for (int b = 0; b < 10; b++)
-          for (int i = 0; i < 3; i++) K[(3 * a + i) * 30 + 3 * b + i] += mass * g.detE * sb.mass[a * 10 + b];
-    for (PetscInt q = 0; q < sb.rule.nq; q++) {
-      const PetscReal *l = &sb.rule.lambda[4 * q], wq = sb.rule.w[q] * g.detE;
-      PetscReal        dN[10][3], F[9], A[81], G[10][3][9], p[MATERIAL_MAX_PARAM];
-      P2Gradients(g, l, dN);
+          for (int i = 0; i < 3; i++) K[(3 * a + i) * 30 + 3 * b + i] += mass * M[a * 10 + b];
+    }
+    const P2Rule &rule = CellRule(sb, g);
+    for (PetscInt q = 0; q < rule.nq; q++) {
+      PetscReal       dN[10][3], X[3], F[9], A[81], G[10][3][9], p[MATERIAL_MAX_PARAM];
+      const PetscReal wq = ReferenceGradients(g, rule, q, dN, X);
       if (DeformationGradient(de, dN, F) <= 0 && sb.law.finiteStrain) continue; /* the residual reported it */
-      PointParameters(sb, g, l, p);
+      PointParameters(sb, X, p);
       sb.law.tangent(F, p, A);
       /* G[a][i][k*3+l] = sum_j dN_a,j A_ijkl: then K_(ai)(bk) = sum_l G[a][i][kl] dN_b,l */
       for (int a = 0; a < 10; a++)

@@ -22,6 +22,7 @@ struct StructureForms {
   DMLabel            region = nullptr;           /* cells of the wall (value 1), or all cells */
   FieldCells            cells;                      /* the block's cells, prepared for assembly */
   P2Rule             rule;                       /* stress and body force */
+  P2Rule             curvedRule;                 /* the same on curved cells (structure/block.cxx says its degree) */
   PetscReal          mass[100];                  /* P2 mass matrix of the reference cell (volume 1/6) */
   FaceRule           faceRule;
   PetscReal          pressure = 0;               /* on the faces of `loaded` (pushes along -n) */

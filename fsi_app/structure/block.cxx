@@ -2,25 +2,79 @@
 #include "block.h"
 #include "discretization/fields.h"
 #include "discretization/nodes.h"
+#include "mesh/mesh.h"
+#include "solver/options.h"
 #include "solver/subdomains.h"
 #include "verification/errors.h"
 #include "verification/mms.h"
 
 namespace fsi {
 
+PetscErrorCode StructureBlock::ReadOptions(std::map<std::string, std::string> &problem)
+{
+  StructureOptions &o = opt;
+  PetscInt          n;
+  PetscBool         set;
+
+  PetscFunctionBegin;
+  PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "fsi_app: the structure block", nullptr);
+  const OptionReader r{PetscOptionsObject, problem};
+  const std::pair<const char *, const char *> renamed[] = {{"-material", "-structure_material"}, {"-E", "-structure_E"}, {"-nu", "-structure_nu"}, {"-nh_mu", "-structure_nh_mu"}, {"-nh_kappa", "-structure_nh_kappa"}, {"-arterial", "-structure_arterial"}, {"-arterial_fibre_angle", "-structure_arterial_fibre_angle"}};
+  for (const auto &old : renamed) PetscCall(r.Renamed(old.first, old.second));
+  PetscCall(r.String("-structure_region", "physical group of the wall's cells (empty: every cell)", o.region, sizeof(o.region), PROBLEM));
+  PetscCall(r.String("-structure_clamp", "groups of faces where the displacement is zero, comma separated; group:xz fixes only those components", o.clamp, sizeof(o.clamp), PROBLEM));
+  PetscCall(r.Real("-structure_pressure", "pressure on the faces of -structure_pressure_group (dyn/cm^2)", &o.pressure, Any, PROBLEM));
+  PetscCall(r.String("-structure_pressure_group", "group of faces the pressure acts on", o.loaded, sizeof(o.loaded), PROBLEM));
+  PetscCall(r.Bool("-structure_pressure_follower", "the pressure acts on the deformed face (follower load) rather than the reference one", &o.follower, PROBLEM));
+  n = 3;
+  PetscCall(r.Reals("-structure_body_force", "body force bx,by,bz per unit reference volume (dyn/cm^3)", o.bodyForce, &n, &set, Any, PROBLEM));
+  PetscCheck(!set || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_body_force: give bx,by,bz (got %" PetscInt_FMT " values)", n);
+  n = 3;
+  PetscCall(r.Reals("-structure_traction", "dead traction tx,ty,tz per unit reference area on -structure_traction_group (dyn/cm^2)", o.traction, &n, &set, Any, PROBLEM));
+  PetscCheck(!set || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_traction: give tx,ty,tz (got %" PetscInt_FMT " values)", n);
+  PetscCall(r.String("-structure_traction_group", "group of faces the traction acts on", o.tractionGroup, sizeof(o.tractionGroup), PROBLEM));
+  PetscCheck(!(o.traction[0] != 0 || o.traction[1] != 0 || o.traction[2] != 0) || o.tractionGroup[0], PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_traction: name the faces it acts on with -structure_traction_group");
+  PetscCall(r.Real("-structure_pressure_ramp", "the pressure rises smoothly (sin^2) from 0 over this time (s); 0: a step at t = 0", &o.ramp, NonNegative, PROBLEM));
+  PetscCall(r.Real("-structure_pressure_until", "the pressure acts while t <= this (s); 0: always", &o.pulseEnd, NonNegative, PROBLEM));
+  PetscCall(r.Enum("-structure_material", "constitutive law of the wall", MaterialNames, &o.material, PROBLEM));
+  PetscCall(r.Real("-structure_E", "Young's modulus (linear elastic)", &o.E, Positive, PROBLEM));
+  PetscCall(r.Real("-structure_nu", "Poisson ratio (linear elastic)", &o.nu, Range{-1, 0.5, PETSC_TRUE, PETSC_TRUE}, PROBLEM));
+  PetscCall(r.Real("-structure_nh_mu", "Neo-Hooke shear modulus (dyn/cm^2)", &o.mu, Positive, PROBLEM));
+  PetscCall(r.Real("-structure_nh_kappa", "Neo-Hooke bulk modulus (dyn/cm^2)", &o.kappa, Positive, PROBLEM));
+  n = 5;
+  PetscCall(r.Reals("-structure_arterial", "arterial wall c1,eps1,eps2,alpha1,alpha2 (dyn/cm^2 for c1, eps1, alpha1)", o.arterial, &n, &set, Any, PROBLEM));
+  PetscCheck(!set || n == 5, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_arterial: give all five of c1,eps1,eps2,alpha1,alpha2 (got %" PetscInt_FMT ")", n);
+  PetscCheck(o.arterial[0] > 0 && o.arterial[1] > 0 && o.arterial[2] > 1 && o.arterial[3] >= 0 && o.arterial[4] >= 2, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
+             "-structure_arterial %g,%g,%g,%g,%g: need c1 > 0, eps1 > 0, eps2 > 1, alpha1 >= 0, alpha2 >= 2 (polyconvexity and a C2 energy)", (double)o.arterial[0], (double)o.arterial[1], (double)o.arterial[2], (double)o.arterial[3], (double)o.arterial[4]);
+  PetscCall(r.Real("-structure_arterial_fibre_angle", "angle of the two fibre families from the circumferential direction (degrees)", &o.fibreAngle, Range{0, 90}, PROBLEM));
+  PetscCall(r.Real("-structure_density", "density of the wall (g/cm^3)", &o.rho, Positive, PROBLEM));
+  PetscCall(r.Int("-structure_degree", "polynomial degree of the displacement", &o.degree, Range{1, 3}, PROBLEM));
+  PetscCall(r.Int("-structure_subdomains", "GDSW subdomains per rank (METIS on the rank's cells)", &o.subdomains, AtLeast(1), RUN));
+  PetscCall(r.CheckChoice("-structure_pc_setup", SplitSetUpNames, 3));
+  PetscCall(PetscOptionsEList("-structure_pc_setup", "when the structure split's preconditioner is rebuilt (default: once for a linear wall, every time step otherwise)", nullptr, SplitSetUpNames, 3, o.pcSetUp < 0 ? "auto" : SplitSetUpNames[o.pcSetUp], &o.pcSetUp, nullptr));
+  PetscCall(r.Points("-structure_probes", "points x1,y1,z1,x2,... (at most 20, reference configuration) where the wall's displacement is recorded every step (in the run report)", o.probes));
+  PetscCall(r.Real("-mms_amplitude", "-mms: the amplitude a of the manufactured displacement d = a sin(pi x)sin(pi y)sin(pi z)(1,1,1) on the unit cube", &o.mmsAmplitude, Any, PROBLEM));
+  n = 2;
+  PetscCall(r.Reals("-lame", "verification against Lame's cylinder: inner,outer radius", o.lameRadii, &n, &set, Positive, RUN));
+  PetscCheck(!set || n == 2, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-lame: give the inner and the outer radius, Ri,Ro (got %" PetscInt_FMT " values)", n);
+  PetscCheck(!set || o.lameRadii[0] < o.lameRadii[1], PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-lame %s,%s: the inner radius must be smaller than the outer one (give Ri,Ro)", Number(o.lameRadii[0]).c_str(), Number(o.lameRadii[1]).c_str());
+  PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
 void StructureBlock::Groups(std::vector<GroupUse> &groups) const
 {
-  for (const auto &g : SplitList(sc.region)) groups.push_back({g, "-structure_region", 3, RegionsRole});
-  for (const auto &g : SplitList(sc.clamp)) groups.push_back({g.substr(0, g.find(':')), "-structure_clamp", 2});
-  for (const auto &g : SplitList(sc.tractionGroup)) groups.push_back({g, "-structure_traction_group", 2});
-  if (sc.pressure != 0) groups.push_back({sc.loaded, "-structure_pressure_group", 2});
+  for (const auto &g : SplitList(opt.region)) groups.push_back({g, "-structure_region", 3, RegionsRole});
+  for (const auto &g : SplitList(opt.clamp)) groups.push_back({g.substr(0, g.find(':')), "-structure_clamp", 2});
+  for (const auto &g : SplitList(opt.tractionGroup)) groups.push_back({g, "-structure_traction_group", 2});
+  if (opt.pressure != 0) groups.push_back({opt.loaded, "-structure_pressure_group", 2});
 }
 
 PetscErrorCode StructureBlock::AddFields(DM dm)
 {
   PetscFunctionBegin;
-  PetscCheck(sc.degree == 2, PETSC_COMM_WORLD, PETSC_ERR_SUP, "-structure_degree %" PetscInt_FMT ": the element loops are P2 (use 2)", sc.degree);
-  PetscCall(AddLagrangeField(dm, "displacement", sc.region, 3, sc.degree, &field));
+  PetscCheck(opt.degree == 2, PETSC_COMM_WORLD, PETSC_ERR_SUP, "-structure_degree %" PetscInt_FMT ": the element loops are P2 (use 2)", opt.degree);
+  PetscCall(AddLagrangeField(dm, "displacement", opt.region, 3, opt.degree, &field));
   PetscFunctionReturn(0);
 }
 
@@ -29,13 +83,13 @@ PetscErrorCode StructureBlock::AddConditions(DM dm, Conditions &list)
   PetscFunctionBegin;
   if (sc.mms) {
     Condition c;
-    const PetscReal *a = &sc.mmsAmplitude;
+    const PetscReal *a = &opt.mmsAmplitude;
     c.name = "-mms (the manufactured displacement on the boundary)", c.field = field;
     PetscCall(DMGetLabel(dm, "boundary", &c.label));
     c.value = [a](const PetscReal x[3], PetscReal t, PetscScalar *v) { MMSElasticityExact(3, t, x, 3, v, (void *)a); };
     list.push_back(c);
   }
-  PetscCall(AddDirichlet(dm, list, sc.clamp, field, "-structure_clamp"));
+  PetscCall(AddDirichlet(dm, list, opt.clamp, field, "-structure_clamp"));
   PetscFunctionReturn(0);
 }
 
@@ -44,54 +98,56 @@ PetscErrorCode StructureBlock::SetUp(DM dm)
   StructureForms &sb = forms;
 
   PetscFunctionBegin;
-  PetscCall(GetMaterialLaw(sc.material, &sb.law));
-  switch (sc.material) {
+  PetscCall(GetMaterialLaw(opt.material, &sb.law));
+  switch (opt.material) {
   case LINEAR_ELASTIC:
-    sb.param[0] = sc.E / (2 * (1 + sc.nu)), sb.param[1] = sc.E * sc.nu / ((1 + sc.nu) * (1 - 2 * sc.nu));
+    sb.param[0] = opt.E / (2 * (1 + opt.nu)), sb.param[1] = opt.E * opt.nu / ((1 + opt.nu) * (1 - 2 * opt.nu));
     break;
   case NEO_HOOKE:
-    sb.param[0] = sc.mu, sb.param[1] = sc.kappa;
+    sb.param[0] = opt.mu, sb.param[1] = opt.kappa;
     break;
   case ARTERIAL:
-    for (int k = 0; k < 5; k++) sb.param[k] = sc.arterial[k];
-    sb.fibreAngle = sc.fibreAngle * PETSC_PI / 180;
+    for (int k = 0; k < 5; k++) sb.param[k] = opt.arterial[k];
+    sb.fibreAngle = opt.fibreAngle * PETSC_PI / 180;
     break;
   }
-  sb.mms = sc.mms ? sc.mmsAmplitude : 0.0;
-  if (sc.region[0]) PetscCall(GetRegionLabel(dm, sc.region, &sb.region));
+  sb.mms = sc.mms ? opt.mmsAmplitude : 0.0;
+  if (opt.region[0]) PetscCall(GetRegionLabel(dm, opt.region, &sb.region));
   /* affine P2 stiffness: degree 2 (exact for the linear law); the trigonometric load: more */
   PetscCall(CreateP2Rule(sc.mms ? 5 : 2, sb.rule));
+  /* curved cells: the mass N_a N_b J (degree 4 + the bend's) and the stiffness, rational in l: degree 6 */
+  PetscCall(CreateP2Rule(6, sb.curvedRule));
   PetscCall(CreateP2Mass(sb.mass));
-  PetscCall(CreateFaceRule(sc.follower ? 4 : 2, sb.faceRule)); /* P2 times the normal: constant (dead) or quadratic (follower) */
-  sb.follower = sc.follower;
-  sb.rho      = sc.rho;
+  PetscCall(CreateFaceRule(opt.follower || MeshIsCurved(dm) ? 4 : 2, sb.faceRule)); /* P2 times the normal: constant (dead, straight) or quadratic (follower, or curved faces) */
+  sb.follower = opt.follower;
+  sb.rho      = opt.rho;
   PetscCall(FieldCellsCreate(dm, sb.region, field, sb.cells));
-  if (sc.pressure != 0) {
+  if (opt.pressure != 0) {
     DMLabel loaded;
-    PetscCall(DMGetLabel(dm, sc.loaded, &loaded));
+    PetscCall(DMGetLabel(dm, opt.loaded, &loaded));
     PetscCall(CellFacesCreate(dm, sb.cells, loaded, sb.loaded));
   }
-  if (sc.tractionGroup[0]) {
+  if (opt.tractionGroup[0]) {
     DMLabel group;
-    PetscCall(DMGetLabel(dm, sc.tractionGroup, &group));
+    PetscCall(DMGetLabel(dm, opt.tractionGroup, &group));
     PetscCall(CellFacesCreate(dm, sb.cells, group, sb.tractionFaces));
   }
-  for (int d = 0; d < 3; d++) sb.bodyForce[d] = sc.bodyForce[d], sb.traction[d] = sc.traction[d];
-  if (!sc.structureProbes.empty()) PetscCall(ProbesCreate(PetscObjectComm((PetscObject)dm), sb.cells, sc.structureProbes, "-structure_probes", probes));
+  for (int d = 0; d < 3; d++) sb.bodyForce[d] = opt.bodyForce[d], sb.traction[d] = opt.traction[d];
+  if (!opt.probes.empty()) PetscCall(ProbesCreate(PetscObjectComm((PetscObject)dm), sb.cells, opt.probes, "-structure_probes", probes));
   PetscFunctionReturn(0);
 }
 
-PetscReal StructureLoadFactor(const Scene &sc, PetscReal t)
+PetscReal StructureBlock::LoadFactor(PetscReal t) const
 {
   if (!sc.Dynamic()) return t;
-  if (sc.pulseEnd > 0 && t > sc.pulseEnd + 1e-12) return 0.0;
-  return SmoothRamp(t, sc.ramp);
+  if (opt.pulseEnd > 0 && t > opt.pulseEnd + 1e-12) return 0.0;
+  return SmoothRamp(t, opt.ramp);
 }
 
 PetscErrorCode StructureBlock::SetTime(PetscReal t)
 {
-  forms.load     = StructureLoadFactor(sc, t);
-  forms.pressure = sc.pressure * forms.load;
+  forms.load     = LoadFactor(t);
+  forms.pressure = opt.pressure * forms.load;
   return 0;
 }
 
@@ -102,7 +158,7 @@ PetscErrorCode StructureBlock::ConfigurePC(DM dm, PC pc, MatNullSpace *nsp)
   PetscFunctionBegin;
   PetscCall(FieldByName(dm, "displacement", &f));
   PetscCall(RigidBodyModes(dm, f, nsp));
-  PetscCall(ConfigureGDSW(pc, dm, sc.region, sc.subdomains));
+  PetscCall(ConfigureGDSW(pc, dm, opt.region, opt.subdomains));
   PetscFunctionReturn(0);
 }
 
@@ -119,12 +175,12 @@ PetscErrorCode StructureBlock::AfterStep(DM dm, PetscInt, PetscReal t, Vec x)
 PetscErrorCode StructureBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
 {
   Errors e;
-  Lame   lame = LameCylinder(sc.E, sc.nu, sc.pressure, sc.lameRadii[0], sc.lameRadii[1]);
+  Lame   lame = LameCylinder(opt.E, opt.nu, opt.pressure, opt.lameRadii[0], opt.lameRadii[1]);
 
   PetscFunctionBegin;
   if (!probes.cell.empty()) report.series.push_back({"displacement", &probes});
-  if (sc.lameRadii[1] > 0) PetscCall(ComputeErrors(dm, forms.cells, x, t, LameSolution, &lame, e));
-  else if (sc.mms) PetscCall(ComputeErrors(dm, forms.cells, x, t, MMSElasticitySolution, &sc.mmsAmplitude, e));
+  if (opt.lameRadii[1] > 0) PetscCall(ComputeErrors(dm, forms.cells, x, t, LameSolution, &lame, e));
+  else if (sc.mms) PetscCall(ComputeErrors(dm, forms.cells, x, t, MMSElasticitySolution, &opt.mmsAmplitude, e));
   else PetscFunctionReturn(0);
   PetscCall(ReportErrors("", e, report));
   PetscFunctionReturn(0);

@@ -8,15 +8,42 @@
 #include "discretization/probes.h"
 #include "solver/block.h"
 #include "structure/assembly.h"
+#include "structure/materials.h"
 
 namespace fsi {
+
+/* The structure's options (-structure_*; ReadOptions lists them with their defaults). */
+struct StructureOptions {
+  char      region[64] = "";  /* group of the structure's cells ("" all) */
+  char      clamp[256] = "";  /* groups with d = 0 (group:xz fixes components) */
+  PetscReal pressure   = 0;   /* on the faces of group `loaded` */
+  char      loaded[64] = "interface";
+  PetscBool follower   = PETSC_FALSE;
+  PetscReal bodyForce[3] = {0, 0, 0};         /* per unit reference volume (dyn/cm^3) */
+  PetscReal traction[3]  = {0, 0, 0};         /* dead traction per unit reference area (dyn/cm^2) */
+  char      tractionGroup[64] = "";
+  PetscReal pulseEnd   = 0;   /* the pressure acts for t <= pulseEnd (0: always) */
+  PetscReal ramp       = 0;   /* the pressure rises as sin^2(pi t / 2 ramp) until t = ramp (0: at once) */
+  Material  material   = LINEAR_ELASTIC;
+  PetscReal E = 1.0, nu = 0.3;                            /* linear elastic */
+  PetscReal mu = 7.72e4, kappa = 3.833e6;                 /* Neo-Hooke (dyn/cm^2) */
+  PetscReal arterial[5] = {1.75e5, 4.998e6, 2.4, 3.00019e8, 5.1}; /* c1, eps1, eps2, alpha1, alpha2 */
+  PetscReal fibreAngle  = 43.39;                          /* degrees from circumferential */
+  PetscReal rho         = 1.2;
+  PetscInt  degree = 2, subdomains = 1;
+  PetscInt  pcSetUp = -1; /* its split's preconditioner rebuilt every Newton step, time step, once (SplitSetUp); -1: once if linear, else every time step */
+  std::vector<PetscReal> probes;  /* points (3 each) where the displacement is recorded */
+  PetscReal mmsAmplitude = 1;     /* -mms: the manufactured displacement's amplitude */
+  PetscReal lameRadii[2] = {0, 0}; /* verification against Lame's cylinder */
+};
 
 class StructureBlock : public Block {
 public:
   explicit StructureBlock(const Scene &sc) : sc(sc) {}
-  const char *Name() const override { return "structure"; }
-  void        Groups(std::vector<GroupUse> &groups) const override;
-  std::string Region() const override { return sc.region; }
+  const char    *Name() const override { return "structure"; }
+  PetscErrorCode ReadOptions(std::map<std::string, std::string> &problem) override;
+  void           Groups(std::vector<GroupUse> &groups) const override;
+  std::string    Region() const override { return opt.region; }
 
   PetscErrorCode AddFields(DM dm) override;
   PetscErrorCode AddConditions(DM dm, Conditions &list) override;
@@ -29,27 +56,30 @@ public:
   PetscErrorCode SetTime(PetscReal t) override;
 
   std::vector<PetscInt> SplitFields() const override { return {field}; }
-  PetscBool             Linear() const override { return (PetscBool)(sc.material == LINEAR_ELASTIC && !sc.follower); }
+  PetscInt              SplitPlace() const override { return 0; } /* FaCSI: the wall first, then the mesh, then the fluid */
+  PetscBool             Linear() const override { return (PetscBool)(opt.material == LINEAR_ELASTIC && !opt.follower); }
   PetscBool             HasEnergy() const override { return PETSC_TRUE; }
   PetscErrorCode        ConfigurePC(DM dm, PC pc, MatNullSpace *nsp) override;
-  SplitSetUp            SetUpPolicy() const override { return sc.pcSetUp >= 0 ? (SplitSetUp)sc.pcSetUp : Linear() ? SETUP_ONCE : SETUP_EVERY_STEP; }
+  SplitSetUp            SetUpPolicy() const override { return opt.pcSetUp >= 0 ? (SplitSetUp)opt.pcSetUp : Linear() ? SETUP_ONCE : SETUP_EVERY_STEP; }
 
   void           Output(std::vector<OutputPart> &parts) const override { parts.push_back({"wall", &forms.cells, {{"displacement", field}}}); }
-  const char    *Headline(PetscInt *f) const override { return *f = field, "displacement"; }
+  void           Unknowns(std::vector<std::pair<std::string, PetscInt>> &u) const override { u.push_back({"structure", field}); }
+  PetscBool      Summary(Headline *h) const override { return *h = {"displacement", field, "displacement_norm"}, PETSC_TRUE; }
   std::string    InvertedCause() const override;
   PetscErrorCode AfterStep(DM dm, PetscInt step, PetscReal t, Vec x) override;
   PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) override;
 
-  PetscInt       field = -1; /* d_s */
-  StructureForms forms;
-  Probes         probes;
+  StructureOptions opt;
+  PetscInt         field = -1; /* d_s */
+  StructureForms   forms;
+  Probes           probes;
 
 private:
   const Scene &sc;
-};
 
-/* The factor of every load (pressure, traction, body force) at time t (dynamics: the pulse and
-   its ramp) or load fraction t (statics). */
-PetscReal StructureLoadFactor(const Scene &sc, PetscReal t);
+  /* The factor of every load (pressure, traction, body force) at time t (dynamics: the pulse
+     and its ramp) or load fraction t (statics). */
+  PetscReal LoadFactor(PetscReal t) const;
+};
 
 } // namespace fsi
