@@ -971,7 +971,8 @@ def structure_bad_options():
 @case
 def options_not_finite():
     """Every real option of -help (the scene's and every block's, scalars and arrays), given nan
-    in a scene with every block, stops with its name before the mesh is read (it used to reach Newton as four halvings and "apply the load in more
+    in a scene with every block, stops with its name before the mesh is read (the wall's pulse
+    end also in a fluid-only scene, whose inlet pulse takes it as its default) (it used to reach Newton as four halvings and "apply the load in more
     increments"); inf too, on 2 ranks."""
     sections = run([APP, "-help"], 1, fail=None).split("-----")
     scene = "".join(t for t in sections if t.lstrip("-\n").startswith("fsi_app: "))  # the scene's and every block's options
@@ -981,6 +982,8 @@ def options_not_finite():
     for name in reals:
         out = refused([APP, "-physics", "fsi", name, "nan"], f"{name}: value must be a finite number (got nan)")  # every block reads its options
         assert "unknowns:" not in out
+    # the fluid's pulse takes the wall's end by default: checked there too when no wall reads it
+    refused([APP, "-physics", "fluid", "-mesh", os.path.join(MESHES, "tube1_L0.msh"), "-structure_pressure_until", "nan"], "-structure_pressure_until: value must be a finite number (got nan)")
     for name, value in (("-structure_pressure", "inf"), ("-structure_body_force", "0,0,-inf"), ("-fluid_inlet_pressure", "1e400")):
         refused([APP, "-options_file", FSI, name, value], f"{name}: value{' 3' if ',' in value else ''} must be a finite number (got {'-' if '-inf' in value else ''}inf)", np=2)
 

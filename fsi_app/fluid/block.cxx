@@ -42,10 +42,12 @@ PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &probl
   PetscInt      n = 3;
 
   PetscFunctionBegin;
-  /* one pulse for the wall and the inlet unless told otherwise */
-  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-structure_pressure_until", &o.pulseEnd, nullptr));
   PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "fsi_app: the fluid block", nullptr);
   const OptionReader r{PetscOptionsObject, problem};
+  PetscBool          wall;
+  /* one pulse for the wall and the inlet unless told otherwise */
+  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-structure_pressure_until", &o.pulseEnd, &wall));
+  if (wall) PetscCall(r.Check("-structure_pressure_until", &o.pulseEnd, 1, NonNegative));
   PetscCall(r.String("-fluid_region", "physical group of the fluid's cells", o.region, sizeof(o.region), PROBLEM));
   PetscCall(r.String("-fluid_noslip", "groups of faces where the velocity is zero, comma separated", o.noslip, sizeof(o.noslip), PROBLEM));
   PetscCall(r.Real("-fluid_density", "density of the fluid (g/cm^3)", &o.rho, Positive, PROBLEM));
