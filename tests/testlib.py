@@ -6,8 +6,8 @@ import sys
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = os.environ.get("GDSW_BUILD", os.path.join(TOP, "build"))
-# one OpenMP thread per rank: the tests run up to 27 ranks on 2 cores, and CHOLMOD would start
-# threads in each
+# one OpenMP thread per rank: the tests run up to 27 ranks on 2 cores (gdsw keeps CHOLMOD's fixed
+# teams closed itself; test setup_threads unsets this)
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_mpi_yield_when_idle="1", OMP_NUM_THREADS="1")
 CASES = {}

@@ -79,21 +79,30 @@ static const P2Rule &CellRule(const StructureForms &sb, const CellGeometry &g)
   return g.curved ? sb.curvedRule : sb.rule;
 }
 
-/* The consistent mass matrix of cell g: the reference one times |det E|, or by quadrature on a
-   curved cell. */
-static void CellMass(const StructureForms &sb, const CellGeometry &g, PetscReal M[100])
+void StructureCurvedMasses(StructureForms &sb)
 {
-  if (!g.curved) {
-    for (int k = 0; k < 100; k++) M[k] = g.detE * sb.mass[k];
-    return;
+  sb.curvedAt.assign(sb.cells.Size(), -1);
+  sb.curvedMass.clear();
+  for (PetscInt k = 0; k < sb.cells.Size(); k++) {
+    const CellGeometry &g = sb.cells.geom[k];
+    if (!g.curved) continue;
+    sb.curvedAt[k] = (PetscInt)sb.curvedMass.size();
+    sb.curvedMass.resize(sb.curvedMass.size() + 100, 0.0);
+    PetscReal *M = &sb.curvedMass[sb.curvedAt[k]];
+    for (PetscInt q = 0; q < sb.curvedRule.nq; q++) {
+      PetscReal       dN[10][3], X[3];
+      const PetscReal w = ReferenceGradients(g, sb.curvedRule, q, dN, X), *N = &sb.curvedRule.N[10 * q];
+      for (int a = 0; a < 10; a++)
+        for (int b = 0; b < 10; b++) M[a * 10 + b] += w * N[a] * N[b];
+    }
   }
-  for (int k = 0; k < 100; k++) M[k] = 0;
-  for (PetscInt q = 0; q < sb.curvedRule.nq; q++) {
-    PetscReal       dN[10][3], X[3];
-    const PetscReal w = ReferenceGradients(g, sb.curvedRule, q, dN, X), *N = &sb.curvedRule.N[10 * q];
-    for (int a = 0; a < 10; a++)
-      for (int b = 0; b < 10; b++) M[a * 10 + b] += w * N[a] * N[b];
-  }
+}
+
+/* The consistent mass matrix of cell k: the reference one times |det E|, or the curved cell's. */
+static void CellMass(const StructureForms &sb, PetscInt k, PetscReal M[100])
+{
+  const PetscInt at = sb.curvedAt.empty() ? -1 : sb.curvedAt[k];
+  for (int i = 0; i < 100; i++) M[i] = at < 0 ? sb.cells.geom[k].detE * sb.mass[i] : sb.curvedMass[at + i];
 }
 
 /* rho / dt^2: the inertia term is rho M (sum_j c_j d^(n+1-j)) / dt^2 (0 in statics). */
@@ -123,7 +132,7 @@ PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f
         for (int i = 0; i < 30; i++) acc[i] += sb.history->second[j + 1] * y[i];
       }
       PetscReal M[100];
-      CellMass(sb, g, M);
+      CellMass(sb, k, M);
       for (int a = 0; a < 10; a++)
         for (int b = 0; b < 10; b++)
           for (int i = 0; i < 3; i++) re[3 * a + i] += inertia * M[a * 10 + b] * acc[3 * b + i];
@@ -184,7 +193,7 @@ PetscErrorCode StructureJacobian(void *ctx, const PetscScalar *x, Mat P)
     Gather(sb.cells, k, x, de);
     if (mass) {
       PetscReal M[100];
-      CellMass(sb, g, M);
+      CellMass(sb, k, M);
       for (int a = 0; a < 10; a++)
         for (int b = 0; b < 10; b++)
           for (int i = 0; i < 3; i++) K[(3 * a + i) * 30 + 3 * b + i] += mass * M[a * 10 + b];

@@ -24,6 +24,8 @@ struct StructureForms {
   P2Rule             rule;                       /* stress and body force */
   P2Rule             curvedRule;                 /* the same on curved cells (structure/block.cxx says its degree) */
   PetscReal          mass[100];                  /* P2 mass matrix of the reference cell (volume 1/6) */
+  std::vector<PetscInt>  curvedAt;               /* per cell: its mass's place in curvedMass, -1 if straight */
+  std::vector<PetscReal> curvedMass;             /* 100 per curved cell, by quadrature (StructureCurvedMasses) */
   FaceRule           faceRule;
   PetscReal          pressure = 0;               /* on the faces of `loaded` (pushes along -n) */
   PetscBool          follower = PETSC_FALSE;     /* the pressure follows the deformed face */
@@ -38,6 +40,8 @@ struct StructureForms {
 };
 
 /* BlockOps of solver/system.h (the context is the StructureForms). */
+/* The mass matrices of the curved cells, once: the reference one times |det E| serves the rest. */
+void           StructureCurvedMasses(StructureForms &sb);
 PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f);
 PetscErrorCode StructureJacobian(void *ctx, const PetscScalar *x, Mat P);
 /* the entries StructureJacobian inserts */

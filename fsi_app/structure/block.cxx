@@ -122,6 +122,7 @@ PetscErrorCode StructureBlock::SetUp(DM dm)
   sb.follower = opt.follower;
   sb.rho      = opt.rho;
   PetscCall(FieldCellsCreate(dm, sb.region, field, sb.cells));
+  StructureCurvedMasses(sb);
   if (opt.pressure != 0) {
     DMLabel loaded;
     PetscCall(DMGetLabel(dm, opt.loaded, &loaded));
