@@ -65,33 +65,48 @@ static PetscErrorCode SwitchToLU(KSP ksp)
    hyperelastic tangent under extreme compression). CHOLMOD raises an error rather than a PC
    failure, and prints its warnings itself, before PETSc sees its status, unless its print
    level (an option of the factor, read at the symbolic factorisation) is at most 1: errors
-   only. The user's own -mat_cholmod_print is left alone. */
-static PetscErrorCode TryCholesky(KSP ksp, PetscBool *ok)
+   only. CHOLMOD gets the node graph's nested dissection (ordering.cxx) as its only ordering.
+   The user's own -mat_cholmod_print, -mat_cholmod_nmethods and ordering type are left alone. */
+static PetscErrorCode TryCholesky(PC pc, KSP ksp, Subdomain &s, LocalMatrix which, PetscBool *ok)
 {
-  PC             pc;
+  PC             lpc;
+  Mat            A;
   PCFailedReason reason = PC_NOERROR;
   MatSolverType  solver;
   const char    *prefix;
-  char           name[256];
-  PetscBool      quiet = PETSC_FALSE, set;
+  char           print[256], nmethods[256], ordering[256];
+  PetscBool      cholmod = PETSC_FALSE, quiet = PETSC_FALSE, ours = PETSC_FALSE, set;
   PetscOptions   options = ((PetscObject)ksp)->options;
   PetscErrorCode ierr;
 
   PetscFunctionBegin;
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCFactorGetMatSolverType(pc, &solver));
-  if (solver && !strcmp(solver, MATSOLVERCHOLMOD)) {
-    PetscCall(PCGetOptionsPrefix(pc, &prefix));
-    PetscCall(PetscSNPrintf(name, sizeof(name), "-%smat_cholmod_print", prefix ? prefix : ""));
-    PetscCall(PetscOptionsHasName(options, nullptr, name, &set));
+  PetscCall(KSPGetPC(ksp, &lpc));
+  PetscCall(PCFactorGetMatSolverType(lpc, &solver));
+  if (solver && !strcmp(solver, MATSOLVERCHOLMOD)) cholmod = PETSC_TRUE;
+  if (cholmod) {
+    PetscCall(PCGetOptionsPrefix(lpc, &prefix));
+    PetscCall(PetscSNPrintf(print, sizeof(print), "-%smat_cholmod_print", prefix ? prefix : ""));
+    PetscCall(PetscOptionsHasName(options, nullptr, print, &set));
     quiet = (PetscBool)!set;
+    PetscCall(PetscSNPrintf(ordering, sizeof(ordering), "-%spc_factor_mat_ordering_type", prefix ? prefix : ""));
+    PetscCall(PetscOptionsHasName(options, nullptr, ordering, &set));
+    PetscCall(PetscSNPrintf(nmethods, sizeof(nmethods), "-%smat_cholmod_nmethods", prefix ? prefix : ""));
+    if (!set) PetscCall(PetscOptionsHasName(options, nullptr, nmethods, &set));
+    ours = (PetscBool)!set;
   }
-  if (quiet) PetscCall(PetscOptionsSetValue(options, name, "1"));
+  if (quiet) PetscCall(PetscOptionsSetValue(options, print, "1"));
+  if (ours) {
+    PetscCall(KSPGetOperators(ksp, &A, nullptr));
+    PetscCall(GDSWComposeRowRanks(pc, s, which, A));
+    PetscCall(PCFactorSetMatOrderingType(lpc, MATORDERINGGDSWNODES));
+    PetscCall(PetscOptionsSetValue(options, nmethods, "1")); /* the given ordering only */
+  }
   PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
   ierr = KSPSetUp(ksp);
   PetscCall(PetscPopErrorHandler());
-  if (quiet) PetscCall(PetscOptionsClearValue(options, name));
-  if (!ierr) PetscCall(PCGetFailedReason(pc, &reason));
+  if (quiet) PetscCall(PetscOptionsClearValue(options, print));
+  if (ours) PetscCall(PetscOptionsClearValue(options, nmethods));
+  if (!ierr) PetscCall(PCGetFailedReason(lpc, &reason));
   *ok = (PetscBool)(!ierr && reason == PC_NOERROR);
   PetscFunctionReturn(0);
 }
@@ -176,7 +191,7 @@ PetscErrorCode GDSWSetUpLocalSolver(PC pc, KSP ksp, Subdomain &s, LocalMatrix wh
   PetscCall(MatGetSize(A, &n, nullptr));
   PetscCall(PetscObjectTypeCompare((PetscObject)lpc, PCCHOLESKY, &cholesky));
   if (cholesky && !failedBefore) PetscCall(MayBeSPD(pc, A, &spd));
-  if (spd) PetscCall(TryCholesky(ksp, &ok));
+  if (spd) PetscCall(TryCholesky(pc, ksp, s, which, &ok));
   if (cholesky && !ok) {
     if (spd) PetscCall(PetscInfo(pc, "Cholesky failed on the %s matrix of subdomain %" PetscInt_FMT " (%" PetscInt_FMT " dofs, not positive definite): LU instead\n", LocalMatrixNames[which], s.gid, n));
     else if (!failedBefore) PetscCall(PetscInfo(pc, "the %s matrix of subdomain %" PetscInt_FMT " (%" PetscInt_FMT " dofs) has a diagonal entry <= 0 or is not symmetric: LU instead of Cholesky\n", LocalMatrixNames[which], s.gid, n));

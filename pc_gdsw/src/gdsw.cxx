@@ -842,7 +842,10 @@ static PetscErrorCode PCDestroy_GDSW(PC pc)
    The subsolvers are `KSP` objects with the prefixes -pc_gdsw_sub_ (the overlapping subdomains),
    -pc_gdsw_extension_ (the interiors of the harmonic extension) and -pc_gdsw_coarse_ (A_0 =
    Phi^T A Phi, see `PCGDSWGetCoarseKSP()`). Defaults: `KSPPREONLY` with Cholesky (CHOLMOD)
-   for symmetric operators, else LU (UMFPACK); MUMPS on all ranks of the `PC` for A_0.
+   for symmetric operators, else LU (UMFPACK); MUMPS on all ranks of the `PC` for A_0. CHOLMOD
+   gets one ordering, METIS nested dissection of the node graph ("gdsw_nodes", registered with
+   `MatOrderingRegister()` and usable by any factorisation as -pc_factor_mat_ordering_type
+   gdsw_nodes); -pc_gdsw_sub_pc_factor_mat_ordering_type external gives CHOLMOD its own choice back.
 
    `PCApplyTranspose()` applies the transpose of each component (transposed local and coarse
    solves; for the restricted first level the restriction and prolongation exchange roles), so
@@ -927,6 +930,7 @@ PetscErrorCode PCGDSWRegister(void)
   if (GDSWRegistered) PetscFunctionReturn(0);
   GDSWRegistered = PETSC_TRUE;
   PetscCall(PCRegister(PCGDSW, PCCreate_GDSW));
+  PetscCall(GDSWRegisterOrdering());
   PetscCall(PetscLogEventRegister("GDSWDecomp", PC_CLASSID, &GDSW_Decomposition));
   PetscCall(PetscLogEventRegister("GDSWInterface", PC_CLASSID, &GDSW_Interface));
   PetscCall(PetscLogEventRegister("GDSWBasis", PC_CLASSID, &GDSW_Basis));

@@ -65,6 +65,7 @@ struct Subdomain {
   Factorisation factorisation[2] = {UNFACTORED, UNFACTORED}; /* per LocalMatrix */
   Vec x = nullptr, y = nullptr;         /* views into the work vectors (arrays placed in apply) */
   PetscInt wOffset = 0;                 /* start of its slice of the concatenated work vector */
+  std::vector<PetscInt> rowRank;        /* per row of Aovl: its node's place in the nested dissection */
 };
 
 } // namespace gdsw
@@ -124,6 +125,9 @@ typedef struct {
 } PC_GDSW;
 
 /* module entry points */
+/* the local Cholesky factorisations' ordering: nested dissection of the node graph */
+#define MATORDERINGGDSWNODES "gdsw_nodes"
+
 PETSC_INTERN PetscErrorCode GDSWBuildDecomposition(PC);
 PETSC_INTERN PetscErrorCode GDSWExtractSubdomainMatrices(PC, MatReuse);
 PETSC_INTERN PetscErrorCode GDSWSubmatrix(Mat, IS, IS, PetscInt, MatReuse, Mat *);
@@ -140,6 +144,8 @@ PETSC_INTERN PetscErrorCode GDSWApplyBalanced(PC, Vec, Vec, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWDefaultFactorSolver(KSP, MatSolverType, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWSetUpLocalSolver(PC, KSP, gdsw::Subdomain &, gdsw::LocalMatrix);
 PETSC_INTERN PetscErrorCode GDSWViewLocalSolvers(PC, PetscViewer);
+PETSC_INTERN PetscErrorCode GDSWComposeRowRanks(PC, gdsw::Subdomain &, gdsw::LocalMatrix, Mat);
+PETSC_INTERN PetscErrorCode GDSWRegisterOrdering(void);
 PETSC_INTERN PetscErrorCode GDSWSerialRegionsBegin(PetscInt *);
 PETSC_INTERN PetscErrorCode GDSWSerialRegionsEnd(PetscInt);
 PETSC_INTERN PetscInt       GDSWSubdomainSizeTarget(const PC_GDSW *);
