@@ -65,7 +65,8 @@ static PetscErrorCode SwitchToLU(KSP ksp)
    hyperelastic tangent under extreme compression). CHOLMOD raises an error rather than a PC
    failure, and prints its warnings itself, before PETSc sees its status, unless its print
    level (an option of the factor, read at the symbolic factorisation) is at most 1: errors
-   only. CHOLMOD gets the node graph's nested dissection (ordering.cxx) as its only ordering.
+   only. CHOLMOD gets the node graph's nested dissection (ordering.cxx) as its only ordering
+   (with inexact first levels, the overlapping matrices it factors exactly).
    The user's own -mat_cholmod_print, -mat_cholmod_nmethods and ordering type are left alone. */
 static PetscErrorCode TryCholesky(PC pc, KSP ksp, Subdomain &s, LocalMatrix which, PetscBool *ok)
 {
@@ -92,7 +93,9 @@ static PetscErrorCode TryCholesky(PC pc, KSP ksp, Subdomain &s, LocalMatrix whic
     PetscCall(PetscOptionsHasName(options, nullptr, ordering, &set));
     PetscCall(PetscSNPrintf(nmethods, sizeof(nmethods), "-%smat_cholmod_nmethods", prefix ? prefix : ""));
     if (!set) PetscCall(PetscOptionsHasName(options, nullptr, nmethods, &set));
-    ours = (PetscBool)!set;
+    /* the interior takes its order from the overlapping matrix's dissection, worth making only
+       when the first level factors that matrix exactly too */
+    ours = (PetscBool)(!set && (which == gdsw::OVERLAPPING || ((PC_GDSW *)pc->data)->localSolver == PC_GDSW_LOCAL_EXACT));
   }
   if (quiet) PetscCall(PetscOptionsSetValue(options, print, "1"));
   if (ours) {
