@@ -84,13 +84,14 @@ static PetscErrorCode RowsByRank(PetscInt n, const PetscInt *rank, IS *row)
 static PetscErrorCode MatGetOrdering_GDSWNodes(Mat A, MatOrderingType type, IS *row, IS *col)
 {
   IS       ranks;
-  PetscInt n, m, bs;
+  PetscInt n, bs;
 
   PetscFunctionBegin;
   PetscCall(MatGetLocalSize(A, &n, nullptr));
   PetscCall(PetscObjectQuery((PetscObject)A, RowRanksKey, (PetscObject *)&ranks));
   if (ranks) {
     const PetscInt *rank;
+    PetscInt        m;
     PetscCall(ISGetLocalSize(ranks, &m));
     PetscCheck(m == n, PETSC_COMM_SELF, PETSC_ERR_PLIB, "PCGDSW: %" PetscInt_FMT " row ranks for a matrix of %" PetscInt_FMT " rows", m, n);
     PetscCall(ISGetIndices(ranks, &rank));
@@ -118,7 +119,8 @@ static PetscErrorCode MatGetOrdering_GDSWNodes(Mat A, MatOrderingType type, IS *
 }
 
 /* Compose on A, the overlapping or interior matrix of s, the rank of each row's node in the
-   nested dissection of s's overlapping node graph (computed at the first call). */
+   nested dissection of s's overlapping node graph (computed at the first call). A matrix keeps
+   its ranks across set-ups with new values: its pattern, and so its ordering, is the same. */
 PetscErrorCode GDSWComposeRowRanks(PC pc, Subdomain &s, LocalMatrix which, Mat A)
 {
   PC_GDSW        *gd = (PC_GDSW *)pc->data;
@@ -127,6 +129,8 @@ PetscErrorCode GDSWComposeRowRanks(PC pc, Subdomain &s, LocalMatrix which, Mat A
   IS              ranks;
 
   PetscFunctionBegin;
+  PetscCall(PetscObjectQuery((PetscObject)A, RowRanksKey, (PetscObject *)&ranks));
+  if (ranks) PetscFunctionReturn(0);
   if (s.rowRank.empty()) {
     std::vector<PetscInt> first, perm;
     PetscCall(ISGetLocalSize(s.overlap, &n));
