@@ -9,6 +9,7 @@
 #include <metis.h>
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 using gdsw::Subdomain;
 
@@ -683,10 +684,12 @@ PetscErrorCode GDSWBuildDecomposition(PC pc)
   PetscFunctionReturn(0);
 }
 
-/* The arrays of a submatrix made by GDSWSubmatrix(). */
+/* The arrays of a submatrix made by GDSWSubmatrix(); j and a are left uninitialised (filled once:
+   zeroing them first was a second pass over fresh pages). */
 struct CSR {
-  std::vector<PetscInt>    i, j;
-  std::vector<PetscScalar> a;
+  std::vector<PetscInt>          i;
+  std::unique_ptr<PetscInt[]>    j;
+  std::unique_ptr<PetscScalar[]> a;
 };
 
 static PetscErrorCode DestroyCSR(void *ctx)
@@ -729,13 +732,14 @@ PetscErrorCode GDSWSubmatrix(Mat M, IS rows, IS cols, PetscInt bs, MatReuse reus
       for (PetscInt e = ia[r[k]]; e < ia[r[k] + 1]; e++) len += map[ja[e]] >= 0;
       csr->i[k + 1] = csr->i[k] + len;
     }
-    csr->j.resize(std::max<PetscInt>(csr->i[nr], 1)); /* nonnull arrays */
-    csr->a.resize(csr->j.size());
+    const PetscInt nnz = std::max<PetscInt>(csr->i[nr], 1); /* nonnull arrays */
+    csr->j.reset(new PetscInt[nnz]);
+    csr->a.reset(new PetscScalar[nnz]);
     for (PetscInt k = 0, p = 0; k < nr; k++)
       for (PetscInt e = ia[r[k]]; e < ia[r[k] + 1]; e++)
         if (map[ja[e]] >= 0) csr->j[p] = map[ja[e]], csr->a[p++] = va[e];
     PetscContainer container;
-    PetscCall(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, nr, nc, csr->i.data(), csr->j.data(), csr->a.data(), S));
+    PetscCall(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, nr, nc, csr->i.data(), csr->j.get(), csr->a.get(), S));
     PetscCall(PetscContainerCreate(PETSC_COMM_SELF, &container));
     PetscCall(PetscContainerSetPointer(container, csr));
     PetscCall(PetscContainerSetUserDestroy(container, DestroyCSR));
@@ -776,42 +780,53 @@ static PetscErrorCode PositionsIn(IS sub, const std::vector<PetscInt> &all, IS *
 
 /* A(Omega_i^delta, Omega_i^delta) and A(Omega~_i, Omega~_i) (Omega~_i lies inside Omega_i^delta):
    one parallel extraction of the rank's union U of overlapping subdomains, A(U, U), then each
-   subdomain's matrices from it. A(U, U) lives only for this: it is as large as the rank's part of A.
-   On one rank A itself is A(U, U). */
+   subdomain's matrices from it. A(U, U) is as large as the rank's part of A; it is kept for the
+   set-ups with the same pattern, which refresh its values in place (the first extraction's
+   allocations and page faults were 1.5 s of each Newton step's set-up on the P2 wall of tube #1
+   at the benchmark's size). On one rank A itself is A(U, U). */
 PetscErrorCode GDSWExtractSubdomainMatrices(PC pc, MatReuse reuse)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
   auto    &sub = *gd->sub;
   const PetscInt n = (PetscInt)sub.size();
   std::vector<PetscInt> U;
-  IS        isU = nullptr;
-  Mat      *AU;
+  Mat       AU;
   PetscBool sequential;
 
   PetscFunctionBegin;
   PetscCall(PetscObjectTypeCompare((PetscObject)gd->A, MATSEQAIJ, &sequential));
-  if (sequential) AU = &gd->A; /* one rank: U is every row, A(U, U) is A */
+  if (sequential) AU = gd->A; /* one rank: U is every row, A(U, U) is A */
   else {
-    for (auto &s : sub) {
-      PetscInt        no;
-      const PetscInt *ov;
-      PetscCall(ISGetLocalSize(s.overlap, &no));
-      PetscCall(ISGetIndices(s.overlap, &ov));
-      U.insert(U.end(), ov, ov + no);
-      PetscCall(ISRestoreIndices(s.overlap, &ov));
+    if (reuse == MAT_INITIAL_MATRIX) {
+      for (auto &s : sub) {
+        PetscInt        no;
+        const PetscInt *ov;
+        PetscCall(ISGetLocalSize(s.overlap, &no));
+        PetscCall(ISGetIndices(s.overlap, &ov));
+        U.insert(U.end(), ov, ov + no);
+        PetscCall(ISRestoreIndices(s.overlap, &ov));
+      }
+      std::sort(U.begin(), U.end());
+      U.erase(std::unique(U.begin(), U.end()), U.end());
+      PetscCall(ISCreateGeneral(PETSC_COMM_SELF, (PetscInt)U.size(), U.data(), PETSC_COPY_VALUES, &gd->isU));
+      PetscCall(ISSetInfo(gd->isU, IS_SORTED, IS_LOCAL, PETSC_TRUE, PETSC_TRUE));
+    } else {
+      PetscInt        nU;
+      const PetscInt *u;
+      PetscCall(ISGetLocalSize(gd->isU, &nU));
+      PetscCall(ISGetIndices(gd->isU, &u));
+      U.assign(u, u + nU);
+      PetscCall(ISRestoreIndices(gd->isU, &u));
     }
-    std::sort(U.begin(), U.end());
-    U.erase(std::unique(U.begin(), U.end()), U.end());
-    PetscCall(ISCreateGeneral(PETSC_COMM_SELF, (PetscInt)U.size(), U.data(), PETSC_USE_POINTER, &isU));
-    PetscCall(ISSetInfo(isU, IS_SORTED, IS_LOCAL, PETSC_TRUE, PETSC_TRUE));
-    PetscCall(MatCreateSubMatrices(gd->A, 1, &isU, &isU, MAT_INITIAL_MATRIX, &AU));
+    PetscCall(MatCreateSubMatrices(gd->A, 1, &gd->isU, &gd->isU, gd->AU ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &gd->AU));
+    AU = gd->AU[0];
   }
   for (PetscInt i = 0; i < n; i++) {
     Subdomain &s = sub[i];
     IS         ovlInU;
     if (sequential) PetscCall(PetscObjectReference((PetscObject)(ovlInU = s.overlap)));
     else PetscCall(PositionsIn(s.overlap, U, &ovlInU));
-    PetscCall(GDSWSubmatrix(AU[0], ovlInU, ovlInU, gd->bs, reuse, &s.Aovl));
+    PetscCall(GDSWSubmatrix(AU, ovlInU, ovlInU, gd->bs, reuse, &s.Aovl));
     PetscCall(ISDestroy(&ovlInU));
     if (reuse == MAT_INITIAL_MATRIX) {
       const PetscInt *ov;
@@ -823,7 +838,5 @@ PetscErrorCode GDSWExtractSubdomainMatrices(PC pc, MatReuse reuse)
     }
     PetscCall(GDSWSubmatrix(s.Aovl, s.nonInOvl, s.nonInOvl, gd->bs, reuse, &s.Anon));
   }
-  if (!sequential) PetscCall(MatDestroySubMatrices(1, &AU));
-  PetscCall(ISDestroy(&isU));
   PetscFunctionReturn(0);
 }

@@ -101,6 +101,8 @@ static PetscErrorCode PCReset_GDSW(PC pc)
   gd->sub->clear();
   gd->sets->clear();
   PetscCall(PetscSFDestroy(&gd->nodeSF));
+  if (gd->AU) PetscCall(MatDestroySubMatrices(1, &gd->AU));
+  PetscCall(ISDestroy(&gd->isU));
   PetscCall(MatDestroy(&gd->A));
   PetscCall(MatDestroy(&gd->Phi));
   PetscCall(MatDestroy(&gd->PhiFull));

@@ -99,6 +99,8 @@ typedef struct {
   std::vector<gdsw::Subdomain> *sub;
   std::vector<std::vector<PetscInt>> *sets; /* distinct sharing sets seen on this rank */
   PetscInt  nGlobalSubdomains;
+  IS        isU;                          /* U: the union of the rank's overlapping subdomains (several ranks) */
+  Mat      *AU;                           /* A(U, U), kept for the set-ups with the same pattern */
   IS       *nonArr, *ovlArr;              /* the subdomains' index sets as arrays, for PCGDSWGetSubdomains() */
   PetscInt  nsubRank0;                    /* subdomains on rank 0, for the view */
   PetscBool balanced;                     /* algebraic subdomains moved between ranks whose rows are unbalanced */
