@@ -239,6 +239,7 @@ int main(int argc, char **argv)
 
   TimeLoop loop;
   loop.snes = snes, loop.history = &history, loop.steps = sc.Steps(), loop.maxCuts = sc.maxCuts, loop.dynamic = dynamic;
+  for (const Split &s : b.Splits()) loop.splits.push_back(s.name);
   loop.setTime = [&](PetscReal t) -> PetscErrorCode {
     PetscFunctionBegin;
     b.system.time = t;
@@ -277,9 +278,7 @@ int main(int argc, char **argv)
   PetscCall(VecNorm(x, NORM_2, &xnorm));
   report.results.insert(report.results.end(), {{"max_" + h.name, hmax}, {h.norm, xnorm}});
   for (Block *blk : b.list) PetscCall(blk->Results(dm, x, dynamic ? loop.steps * step : 1.0, report));
-  std::vector<std::string> splits;
-  for (const Split &s : b.Splits()) splits.push_back(s.name);
-  PetscCall(PhasesMeasure(PETSC_COMM_WORLD, t1 - t0, splits, report.phases));
+  PetscCall(PhasesMeasure(PETSC_COMM_WORLD, t1 - t0, loop.splits, report.phases));
   const Phases &p = report.phases;
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "seconds: assembly %.3f preconditioner setup %.3f", p.assembly, p.setup));
   for (const auto &s : p.splitSetUp) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s%s %.3f", &s == &p.splitSetUp.front() ? " (" : ", ", s.first.c_str(), s.second));

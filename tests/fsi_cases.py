@@ -505,11 +505,25 @@ def check_seconds(r, what, split):
         between(s["assembly"] + s["preconditioner_setup"] + s["krylov"], 0, bound, f"{what}: sum of the phases (s)")
 
 
+def check_step_seconds(r, what):
+    """Each step's phases in the run report: summed over the steps they stay within the run's
+    (the run's events count from the log's start, before the loop), the steps' wall clocks add
+    up to the loop's but for what runs between steps (probes; no output here), and the peak
+    memory after each step never falls and ends at the run's."""
+    steps, bound = r["steps"], 1e-3 * len(r["steps"])
+    for phase in ("assembly", "preconditioner_setup", "krylov"):
+        between(sum(s["seconds"][phase] for s in steps), 1e-6, r["seconds"][phase] + bound, f"{what}: seconds in {phase} summed over the steps")
+    between(sum(s["seconds"]["total"] for s in steps) / r["seconds"]["total"], 0.9, 1 + bound / r["seconds"]["total"], f"{what}: steps' wall clocks / the loop's")
+    peaks = [s["peak_memory_mib"] for s in steps]
+    assert peaks == sorted(peaks) and abs(peaks[-1] - r["peak_memory_mib"]) < 0.11, (peaks, r["peak_memory_mib"])
+
+
 @case
 def run_report():
     """The run report's seconds and memory (-report), one rank: the phases are present, positive
     and bounded by the time loop's wall time (check_seconds) for the wall with gdsw (one PC: the
-    three phases sum to at most the total) and for the fluid with the Schur fieldsplit; the peak
+    three phases sum to at most the total) and for the fluid with the Schur fieldsplit, whose
+    steps' phases add up to the run's (check_step_seconds); the peak
     resident memory exceeds the assembled operator's AIJ storage (12 bytes per nonzero: a value
     and a 32-bit column index; the nonzeros from -ksp_view; measured 14 times as much)."""
     tmp = tempfile.mkdtemp()
@@ -522,7 +536,9 @@ def run_report():
     between(wall["peak_memory_mib"] * 2**20 / (12 * nonzeros), 1, 1e4, f"peak memory / AIJ storage of the operator ({nonzeros} nonzeros)")
     run([APP, "-options_file", os.path.join(MESHES, "..", "scenes", "fluid_tube1_pulse.opts"), "-mesh", os.path.join(MESHES, "tube1_L0.msh"),
          "-t_final", 1e-3, "-report", os.path.join(tmp, "fluid.json")])
-    check_seconds(report(os.path.join(tmp, "fluid.json")), "fluid, Schur fieldsplit", split=True)
+    fluid = report(os.path.join(tmp, "fluid.json"))
+    check_seconds(fluid, "fluid, Schur fieldsplit", split=True)
+    check_step_seconds(fluid, "fluid, Schur fieldsplit")
     shutil.rmtree(tmp)
 
 

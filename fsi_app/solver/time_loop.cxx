@@ -84,14 +84,21 @@ PetscErrorCode RunTimeLoop(const TimeLoop &loop, PetscInt first, Vec x, std::vec
   PetscCall(SNESGetConvergenceHistory(loop.snes, &norms, nullptr, nullptr));
   if (!norms) PetscCall(SNESSetConvergenceHistory(loop.snes, nullptr, nullptr, PETSC_DECIDE, PETSC_TRUE)); /* |F_0| of each solve, PETSc's storage */
   for (PetscInt step = first + 1; step <= loop.steps; step++) {
-    StepRecord rec;
-    PetscBool  ok;
+    StepRecord     rec;
+    PetscBool      ok;
+    Phases         before, after;
+    PetscLogDouble t0, t1;
     rec.step = step, rec.t = step * loop.history->dt;
+    PetscCall(PetscTime(&t0));
+    PetscCall(PhasesMeasure(PETSC_COMM_WORLD, 0, loop.splits, before));
     PetscCall(Advance(loop, (step - 1) * loop.history->dt, 0, x, rec, &ok));
+    PetscCall(PetscTime(&t1));
+    PetscCall(PhasesMeasure(PETSC_COMM_WORLD, t1 - t0, loop.splits, after));
+    rec.phases = PhasesSince(before, after);
     records.push_back(rec);
     if (loop.steps > 1 || rec.cuts)
-      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s %" PetscInt_FMT "/%" PetscInt_FMT " t %.4e newton %" PetscInt_FMT " krylov %" PetscInt_FMT " %s%s\n", loop.dynamic ? "step" : "load step", step, loop.steps, (double)rec.t, rec.newton, rec.krylov,
-                            SNESConvergedReasons[rec.reason], rec.cuts ? " (after halving the step)" : ""));
+      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s %" PetscInt_FMT "/%" PetscInt_FMT " t %.4e newton %" PetscInt_FMT " krylov %" PetscInt_FMT " %s%s (%.1f s, peak memory %.0f MiB)\n", loop.dynamic ? "step" : "load step", step, loop.steps, (double)rec.t, rec.newton, rec.krylov,
+                            SNESConvergedReasons[rec.reason], rec.cuts ? " after halving the step" : "", rec.phases.total, rec.phases.peakMiB));
     if (!ok) break;
     PetscCall(loop.afterStep(step, rec.t, x));
   }

@@ -6,6 +6,7 @@
    checkpoints do not depend on the cuts. */
 #pragma once
 
+#include "io/phases.h"
 #include "solver/time_history.h"
 #include <functional>
 #include <petscsnes.h>
@@ -18,6 +19,7 @@ struct StepRecord {
   PetscReal           t    = 0;
   PetscInt            newton = 0, krylov = 0, cuts = 0; /* summed over every attempt */
   SNESConvergedReason reason = SNES_CONVERGED_ITERATING;
+  Phases              phases; /* of this step: seconds per phase, wall clock (total), peak memory so far */
 };
 
 struct TimeLoop {
@@ -25,6 +27,7 @@ struct TimeLoop {
   TimeHistory                               *history; /* h.dt is the step; no past states in statics */
   PetscInt                                   steps, maxCuts;
   PetscBool                                  dynamic;
+  std::vector<std::string>                   splits;    /* named splits whose set-up each step's phases report */
   std::function<PetscErrorCode(PetscReal t)> setTime;   /* loads at time (or load fraction) t */
   std::function<PetscErrorCode(PetscReal t, Vec x)> predict; /* the first iterate of the step to t (may be empty) */
   std::function<PetscErrorCode(PetscInt step, PetscReal t, Vec x)> afterStep; /* output, checkpoints */
