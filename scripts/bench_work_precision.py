@@ -11,12 +11,8 @@ relative L2 norm of the displacement or velocity against the exact solution.
              spatial h^3), FGMRES to rtol 1e-8 -> bench/results/work_precision_fluid.*
   poiseuille: Hagen-Poiseuille flow in the rigid tube #1 (tube1_L0-L2; make-meshes makes L2),
              FGMRES to rtol 1e-8 -> bench/results/work_precision_poiseuille.*
-  fsi:       the coupled pressure wave in tube #1 (linear wall, scenes/fsi_tube1_linear.opts,
-             MUMPS) on tube1_L0 x dt 0.5, 0.25, 0.125 ms and tube1_L1 x dt 0.5, 0.25 ms (all
-             three with --full; L2 too with --levels 3) to t = 6 ms: the pressure on the axis and the wall's radial displacement at mid-length
-             (probes) at t = 3 and 6 ms, errors against the finest run, and the observed orders
-             in time (successive differences) -> bench/results/work_precision_fsi.*
-Usage: scripts/bench_work_precision.py [structure|fluid|poiseuille|fsi] [--plot] [--levels N] [--full]
+The coupled problem's study is scripts/bench_fsi_work_precision.py.
+Usage: scripts/bench_work_precision.py [structure|fluid|poiseuille] [--plot]
 (--plot redraws the PNG from the CSV)"""
 import csv
 import math
@@ -68,92 +64,12 @@ FAMILIES = {
         },
     },
 }
-FAMILIES["fsi"] = {"out": "work_precision_fsi", "pcs": {}, "scenes": {}}
 FAMILY = next((a for a in sys.argv[1:] if a in FAMILIES), "structure")
 PCS, SCENES = FAMILIES[FAMILY]["pcs"], FAMILIES[FAMILY]["scenes"]
 out = os.path.join(top, "bench", "results", FAMILIES[FAMILY]["out"])
 
 
-FSI_DT = (5e-4, 2.5e-4, 1.25e-4)
-FSI_TIMES = (3e-3, 6e-3)
-FSI_PROBES = "-fluid_probes 0,0,1.25 -structure_probes 0.18,0,1.25"  # the axis; mid-wall (x: radial)
-
-
-def fsi_values(r):
-    """(pressure, radial displacement) at FSI_TIMES from a run report's probes."""
-    series = {p["field"]: p for p in r["probes"]}
-    out = {}
-    for t in FSI_TIMES:
-        for field, comp, name in (("pressure", 0, "p"), ("displacement", 0, "d")):
-            s = series[field]
-            k = min(range(len(s["t"])), key=lambda j: abs(s["t"][j] - t))
-            out[f"{name}_{t * 1e3:g}ms"] = s["values"][s["components"] * k + comp]
-    return out
-
-
-def main_fsi():
-    levels = int(sys.argv[sys.argv.index("--levels") + 1]) if "--levels" in sys.argv else 2
-    if levels > 2 and not os.path.exists(f"{top}/meshes/tube1_L2.msh"):
-        subprocess.run([f"{top}/scripts/make-meshes", "tube1", "2"], check=True)
-    rows, cmds = [], []
-    report = os.path.join(tempfile.mkdtemp(), "r.json")
-    for level in range(levels):
-        for dt in FSI_DT if level == 0 or "--full" in sys.argv else FSI_DT[:2]:  # L1 at the smallest dt: 48 steps of 35 s
-            cmd = (f"mpiexec -n 2 {app} -options_file {top}/scenes/fsi_tube1_linear.opts -mesh {top}/meshes/tube1_L{level}.msh "
-                   f"-dt {dt:g} -t_final {FSI_TIMES[-1]:g} {FSI_PROBES} -report {report}")
-            r = run_report(cmd, report, 7200)
-            if not r:
-                continue
-            row = {"level": level, "dt": dt, "dofs": sum(r["unknowns"].values()), "seconds": r["seconds"]["total"],
-                   "newton_per_step": sum(s["newton"] for s in r["steps"]) / len(r["steps"]), "peak_memory_mib": r["peak_memory_mib"], **fsi_values(r)}
-            print(row, flush=True)
-            rows.append(row)
-            cmds.append(cmd)
-    finest = max(rows, key=lambda x: (int(x["level"]), -float(x["dt"])))
-    for row in rows:  # errors against the finest run, relative to its largest value of each quantity
-        for q in ("p", "d"):
-            scale = max(abs(float(finest[f"{q}_{t * 1e3:g}ms"])) for t in FSI_TIMES)
-            for t in FSI_TIMES:
-                key = f"{q}_{t * 1e3:g}ms"
-                row[f"error_{key}"] = abs(float(row[key]) - float(finest[key])) / scale
-    for level in range(levels):  # order in time from three steps: log2 of the ratio of successive differences
-        runs = sorted((r for r in rows if int(r["level"]) == level), key=lambda x: -float(x["dt"]))
-        if len(runs) == 3:
-            for key in [k for k in runs[0] if k[:2] in ("p_", "d_")]:
-                d1, d2 = abs(float(runs[0][key]) - float(runs[1][key])), abs(float(runs[1][key]) - float(runs[2][key]))
-                print(f"level {level} {key}: observed order in time {math.log2(d1 / d2) if d2 > 0 else float('nan'):.2f}")
-    write_results(out, rows, cmds, "scripts/bench_work_precision.py fsi")
-    plot_fsi(rows)
-
-
-def plot_fsi(rows):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
-    for ax, q, what in ((axes[0], "d", "wall's radial displacement"), (axes[1], "p", "pressure on the axis")):
-        for level in sorted({int(r["level"]) for r in rows}):
-            for t in FSI_TIMES:
-                pts = sorted((float(r["seconds"]), float(r[f"error_{q}_{t * 1e3:g}ms"])) for r in rows if int(r["level"]) == level)
-                pts = [p for p in pts if p[1] > 0]
-                if pts:
-                    ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-", label=f"tube1_L{level}, t = {t * 1e3:g} ms")
-        ax.set_title(f"coupled tube #1, {what} at z = 1.25 cm (dt 0.5, 0.25, 0.125 ms)", fontsize=9)
-        ax.set_xlabel("run time, 2 ranks (s)")
-        ax.set_ylabel("error against the finest run (relative)")
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(out + ".png", dpi=110)
-
-
 def main():
-    if FAMILY == "fsi" and "--plot" in sys.argv:
-        with open(out + ".csv") as f:
-            plot_fsi(list(csv.DictReader(f)))
-        return
-    if FAMILY == "fsi":
-        return main_fsi()
     if "--plot" in sys.argv:
         with open(out + ".csv") as f:
             plot(list(csv.DictReader(f)))

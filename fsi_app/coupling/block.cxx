@@ -228,17 +228,27 @@ PetscErrorCode CouplingBlock::FluidVolume(DM dm, const PetscScalar *x, PetscReal
   PetscFunctionReturn(0);
 }
 
+/* int_Gamma |d|^2 dA in the reference configuration for the local state x: d_f on the fluid's
+   interface faces, which equals d_s there. */
+PetscErrorCode CouplingBlock::InterfaceDisplacementSquared(DM dm, const PetscScalar *x, PetscReal *d2)
+{
+  PetscFunctionBegin;
+  PetscCall(FluidFaceNormSquared(dm, fluid->forms, geometry->forms.cells, wallFaces, x, d2));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CouplingBlock::AfterStep(DM dm, PetscInt, PetscReal t, Vec x)
 {
   Balance b;
 
   PetscFunctionBegin;
-  if (balance.empty()) /* the volumes before the first step recorded (the start, or a checkpoint's state) */
+  if (balance.empty()) /* the states before the first step recorded (the start, or a checkpoint's state) */
     for (size_t j = 1; j < history->past.size(); j++) {
       const PetscScalar *y;
       PetscReal          v;
       PetscCall(VecGetArrayRead(history->past[j], &y));
       PetscCall(FluidVolume(dm, y, &v));
+      if (j == 1) PetscCall(InterfaceDisplacementSquared(dm, y, &d2Before));
       PetscCall(VecRestoreArrayRead(history->past[j], &y));
       before.push_back(v);
     }
@@ -250,6 +260,7 @@ PetscErrorCode CouplingBlock::AfterStep(DM dm, PetscInt, PetscReal t, Vec x)
     const PetscScalar *y; /* past[0] is x with its essential values */
     PetscCall(VecGetArrayRead(history->past[0], &y));
     PetscCall(FluidVolume(dm, y, &b.volume));
+    PetscCall(InterfaceDisplacementSquared(dm, y, &b.d2));
     PetscCall(VecRestoreArrayRead(history->past[0], &y));
   }
   b.in = -b.in; /* into the fluid */
@@ -281,6 +292,11 @@ PetscErrorCode CouplingBlock::Results(DM dm, Vec, PetscReal, RunReport &report)
   if (balance.empty()) PetscFunctionReturn(0);
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "volume balance over %zu steps: max |inflow - outflow - interface flux| %.3e (max inflow %.3e); max |interface flux - dV/dt| %.3e (max interface flux %.3e)\n", balance.size(), (double)mass, (double)inMax, (double)rate, (double)wallMax));
   report.results.insert(report.results.end(), {{"volume_balance", mass}, {"max_inflow", inMax}, {"volume_rate_mismatch", rate}, {"max_interface_flux", wallMax}});
+  /* ||d||_{L2(Gamma x (t0, T))} by the trapezoidal rule (second order: it does not cap BDF2's) */
+  PetscReal integral = 0, previous = d2Before;
+  for (const Balance &b : balance) integral += history->dt * (previous + b.d2) / 2, previous = b.d2;
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "interface displacement: L2 norm in space and time %.6e cm^2 s^1/2\n", (double)PetscSqrtReal(integral)));
+  report.results.push_back({"interface_displacement_l2", PetscSqrtReal(integral)});
   PetscFunctionReturn(0);
 }
 

@@ -58,6 +58,7 @@ private:
 
   PetscErrorCode Continuity(DM dm, PetscReal *velocity, PetscReal *geometric);
   PetscErrorCode FluidVolume(DM dm, const PetscScalar *x, PetscReal *volume);
+  PetscErrorCode InterfaceDisplacementSquared(DM dm, const PetscScalar *x, PetscReal *d2);
 
   const Scene          &sc;
   StructureBlock       *structure = nullptr;
@@ -66,12 +67,14 @@ private:
   const TimeHistory    *history   = nullptr;
   std::vector<Node>     nodes;
   std::vector<CellFace> wallFaces; /* the fluid's faces on the interface: the flux through the moving wall */
-  /* the volume balance per step: fluxes through inlet, outlet and interface, fluid volume */
+  /* per step: fluxes through inlet, outlet and interface, fluid volume (the volume balance) and
+     int_Gamma |d|^2 dA (the interface displacement's norm in space and time) */
   struct Balance {
-    PetscReal t, in, out, wall, volume;
+    PetscReal t, in, out, wall, volume, d2;
   };
   std::vector<Balance>   balance;
-  std::vector<PetscReal> before; /* volumes of the states before the first step recorded */
+  std::vector<PetscReal> before;   /* volumes of the states before the first step recorded */
+  PetscReal              d2Before; /* int_Gamma |d|^2 dA of the state before it */
 };
 
 } // namespace fsi

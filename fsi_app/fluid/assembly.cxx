@@ -345,4 +345,24 @@ PetscErrorCode FluidFlux(DM dm, const FluidForms &fb, const std::vector<CellFace
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode FluidFaceNormSquared(DM dm, const FluidForms &fb, const FieldCells &v, const std::vector<CellFace> &faces, const PetscScalar *x, PetscReal *norm2)
+{
+  PetscReal sum = 0;
+
+  PetscFunctionBegin;
+  for (const CellFace &face : faces) {
+    PetscReal ve[30];
+    Gather(v, face.k, x, ve);
+    ForEachFacePoint(fb, face, nullptr, [&](const PetscReal N[10], const PetscReal *, const PetscReal *, PetscReal w) {
+      for (int c = 0; c < 3; c++) {
+        PetscReal vc = 0;
+        for (int a = 0; a < 10; a++) vc += N[a] * ve[3 * a + c];
+        sum += w * vc * vc;
+      }
+    });
+  }
+  PetscCallMPI(MPIU_Allreduce(&sum, norm2, 1, MPIU_REAL, MPIU_SUM, PetscObjectComm((PetscObject)dm)));
+  PetscFunctionReturn(0);
+}
+
 } // namespace fsi

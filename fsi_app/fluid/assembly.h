@@ -56,5 +56,8 @@ void FluidCouplings(const FluidForms &fb, Sparsity &s);
 
 /* int u . n da over the faces (in the current configuration): the flux through an outlet. X is global. */
 PetscErrorCode FluidFlux(DM dm, const FluidForms &fb, const std::vector<CellFace> &faces, Vec X, PetscReal *flux);
+/* int |v|^2 dA over the faces in the reference configuration, v a P2 vector field on the fluid's
+   cells (the mesh displacement fb.mesh, say), for the local state x; summed over the ranks. */
+PetscErrorCode FluidFaceNormSquared(DM dm, const FluidForms &fb, const FieldCells &v, const std::vector<CellFace> &faces, const PetscScalar *x, PetscReal *norm2);
 
 } // namespace fsi

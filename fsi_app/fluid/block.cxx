@@ -9,6 +9,8 @@
 
 namespace fsi {
 
+const char *const PulseShapeNames[] = {"step", "cosine", "PulseShape", "PULSE_", nullptr};
+
 /* The manufactured flows' Dirichlet faces: the boundary but the outlet, where the exact
    traction fixes the pressure's constant. */
 static PetscErrorCode MMSDirichletFaces(const FluidOptions &o, DM dm, DMLabel *faces)
@@ -54,6 +56,7 @@ PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &probl
   PetscCall(r.Real("-fluid_viscosity", "dynamic viscosity of the fluid (poise)", &o.mu, Positive, PROBLEM));
   PetscCall(r.Real("-fluid_inlet_pressure", "normal stress: traction -p n on the faces of -fluid_inlet (dyn/cm^2)", &o.inletPressure, Any, PROBLEM));
   PetscCall(r.Real("-fluid_inlet_pressure_until", "the inlet pressure acts while t <= this (s); 0: always (default: -structure_pressure_until)", &o.pulseEnd, NonNegative, PROBLEM));
+  PetscCall(r.Enum("-fluid_inlet_pressure_shape", "the inlet pressure over time: step (on at once) or cosine (p (1 - cos(2 pi t / T)) / 2 over [0, T], T = -fluid_inlet_pressure_until)", PulseShapeNames, &o.pulseShape, PROBLEM));
   PetscCall(r.Reals("-fluid_inflow_velocity", "prescribed velocity ux,uy,uz on the faces of -fluid_inlet (cm/s; no-slip groups keep u = 0 on their nodes)", o.inflowVelocity, &n, &o.inflow, Any, PROBLEM));
   PetscCheck(!o.inflow || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_inflow_velocity: give ux,uy,uz (got %" PetscInt_FMT " values)", n);
   PetscCall(r.Points("-fluid_probes", "points x1,y1,z1,x2,... (at most 20, reference configuration) where the pressure is recorded every step (in the run report); with -fluid_inlet_pressure, when the pulse's front (half its pressure) passes each and the wave speed", o.probes));
@@ -67,6 +70,7 @@ PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &probl
   PetscCall(r.Enum("-mms_flow", "-mms: the manufactured flow (exact velocity on the boundary but -fluid_outlet, exact traction there)", FlowMMSKindNames, &o.mmsFlow, PROBLEM));
   PetscCall(r.Real("-mms_ramp", "-mms: the trigonometric manufactured flow rises as sin^2(pi t / 2T) over this time T (s); 0: steady", &o.mmsRamp, NonNegative, PROBLEM));
   PetscOptionsEnd();
+  PetscCheck(o.pulseShape == PULSE_STEP || o.pulseEnd > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_inlet_pressure_shape cosine needs the hump's length: -fluid_inlet_pressure_until T with T > 0");
   PetscCheck(!o.inflow || (o.inletPressure == 0 && !sc.mms && o.poiseuille[0] == 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_inflow_velocity: the inlet cannot also take -fluid_inlet_pressure, -mms or -poiseuille (one condition per face)");
   PetscFunctionReturn(0);
 }
@@ -153,9 +157,11 @@ PetscErrorCode FluidBlock::SetUp(DM dm)
     for (const char *g : {opt.inlet, opt.outlet}) PetscCall(addTraction(g, [p](const PetscReal x[3], const PetscReal n[3], PetscReal, PetscReal t[3]) { PoiseuilleTraction(p, x, n, t); }));
   } else if (opt.inletPressure != 0) {
     const PetscReal p = opt.inletPressure, until = opt.pulseEnd;
-    const PetscBool steady = (PetscBool)!sc.Dynamic(); /* time is then the load fraction: continuation in p */
-    PetscCall(addTraction(opt.inlet, [p, until, steady](const PetscReal *, const PetscReal n[3], PetscReal time, PetscReal t[3]) {
-      const PetscReal pt = steady ? p * time : (until == 0 || time <= until + 1e-12 ? p : 0.0);
+    const PetscBool steady = (PetscBool)!sc.Dynamic(), /* time is then the load fraction: continuation in p */
+      cosine = (PetscBool)(opt.pulseShape == PULSE_COSINE);
+    PetscCall(addTraction(opt.inlet, [p, until, steady, cosine](const PetscReal *, const PetscReal n[3], PetscReal time, PetscReal t[3]) {
+      const bool      on = until == 0 || time <= until + 1e-12;
+      const PetscReal pt = steady ? p * time : !on ? 0.0 : cosine ? p * (1 - PetscCosReal(2 * PETSC_PI * time / until)) / 2 : p;
       for (int d = 0; d < 3; d++) t[d] = -pt * n[d];
     }));
   }

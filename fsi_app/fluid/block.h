@@ -14,6 +14,11 @@
 
 namespace fsi {
 
+/* The inlet pressure over time: on at once, or one smooth hump p (1 - cos(2 pi t / T)) / 2 over
+   [0, T] (T = -fluid_inlet_pressure_until; no jump, so the time schemes keep their order). */
+enum PulseShape { PULSE_STEP = 0, PULSE_COSINE = 1 };
+extern const char *const PulseShapeNames[];
+
 /* The fluid's options (-fluid_*; ReadOptions lists them with their defaults). */
 struct FluidOptions {
   char      region[64] = "fluid";
@@ -21,6 +26,7 @@ struct FluidOptions {
   PetscReal rho = 1.0, mu = 0.03;          /* g/cm^3, poise */
   PetscReal inletPressure = 0;             /* normal stress -p n on the inlet group (dyn/cm^2) */
   PetscReal pulseEnd = 0;                  /* it acts while t <= pulseEnd (0: always) */
+  PulseShape pulseShape = PULSE_STEP;
   PetscReal inflowVelocity[3] = {0, 0, 0}; /* or a prescribed velocity there (cm/s) */
   PetscBool inflow = PETSC_FALSE;
   char      inlet[64] = "inlet", outlet[64] = "outlet";

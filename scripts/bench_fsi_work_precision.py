@@ -1,0 +1,226 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""Error against run time of the coupled problem: the pressure wave in tube #1 (linear wall,
+scenes/fsi_tube1_linear.opts) to t = 12 ms, 2 ranks.
+
+Grid: mesh levels 0-2 (tube1_L<k>.msh; scripts/make-meshes makes L2) on straight and on curved
+cells (tube1_L<k>_o2.msh) x dt = 0.4, 0.2, 0.1 ms x backward Euler and BDF2 x the solver
+configurations a user chooses from: MUMPS on the whole system, FaCSI with GDSW
+(scenes/fsi_facsi.opts), and FaCSI with the inexact Newton options (scenes/fsi_inexact_newton.opts);
+MUMPS only on level 0 unless --configs names it (on L1 it takes 20 s per step, 40 min per run
+at dt = 0.1 ms).
+
+Quantities, at z = 0.625, 1.25, 1.875 cm: the front's arrival (the axis pressure reaching half
+the inlet's), the first peak of the axis pressure and of the inner wall's radial displacement
+(the first local maximum above half the series' largest, refined by the parabola through the
+three samples around it); and the interface displacement's L2 norm in space and time.
+
+Every solver configuration solves the same discrete problem to the same tolerance, so the error
+of a run is that of its (mesh, dt, scheme); the reference of each quantity, per scheme and
+geometry, is Richardson's extrapolation from the finest runs: q* = q(h2, dt3) + (q(h2, dt3) -
+q(h2, dt2)) / (2^p_t - 1) + (q(h2, dt3) - q(h1, dt3)) / ((h1/h2)^p_h - 1), with the observed orders
+p_t (at the finest level, from the three steps) and p_h (at the smallest step, from the three
+levels; h ~ fluid velocity unknowns^(-1/3), as the levels are not nested), each clipped to
+[0.5, 4]. Errors are relative to |q*| (arrivals: to the arrival time).
+
+Each run is one row of bench/results/work_precision_fsi.csv; a run already there is not run
+again (delete its row to repeat it), so the grid can be filled over several calls.
+Usage: scripts/bench_fsi_work_precision.py [--levels 0,1,2] [--geometry straight,curved]
+  [--schemes backward_euler,bdf2] [--configs mumps,facsi,inexact] [--plot]"""
+import csv
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+from benchlib import TOP, loadavg, run_report, write_results
+
+APP = os.path.join(TOP, "install", "bin", "fsi_app")
+OUT = os.path.join(TOP, "bench", "results", "work_precision_fsi")
+Z = (0.625, 1.25, 1.875)
+RI = 0.15  # tube #1's inner radius
+T_FINAL = 12e-3
+DTS = (4e-4, 2e-4, 1e-4)
+CONFIGS = {"mumps": ("MUMPS", ""),
+           "facsi": ("FaCSI, GDSW", "-options_file scenes/fsi_facsi.opts"),
+           "inexact": ("FaCSI, GDSW, inexact Newton", "-options_file scenes/fsi_facsi.opts -options_file scenes/fsi_inexact_newton.opts")}
+PROBES = "-fluid_probes " + ",".join(f"0,0,{z}" for z in Z) + " -structure_probes " + ",".join(f"{RI},0,{z}" for z in Z)
+QUANTITIES = [f"arrival_{z}" for z in Z] + [f"peak_pressure_{z}" for z in Z] + [f"peak_displacement_{z}" for z in Z] + ["interface_l2"]
+KEY = ("config", "scheme", "geometry", "level", "dt")
+
+
+def arg(name, default):
+    return sys.argv[sys.argv.index(name) + 1].split(",") if name in sys.argv else default
+
+
+def mesh(level, geometry):
+    name = f"meshes/tube1_L{level}{'_o2' if geometry == 'curved' else ''}.msh"
+    if not os.path.exists(os.path.join(TOP, name)):
+        subprocess.run([os.path.join(TOP, "scripts", "make-meshes"), "tube1", str(level)] + (["2"] if geometry == "curved" else []), check=True, cwd=TOP)
+    return name
+
+
+def first_peak(t, x):
+    """The first local maximum of x(t) above half its largest value, refined by the parabola
+    through the three samples around it; None if the series ends before it."""
+    top = max(x)
+    k = next((k for k in range(1, len(x) - 1) if x[k - 1] < x[k] >= x[k + 1] and x[k] > top / 2), None)
+    if k is None:
+        return None
+    a, b, c = x[k - 1], x[k], x[k + 1]
+    curvature = a - 2 * b + c
+    s = 0.5 * (a - c) / curvature if curvature != 0 else 0.0  # offset of the vertex in samples, |s| <= 1/2
+    return b - 0.25 * (a - c) * s
+
+
+def quantities(r):
+    series = {s["field"]: s for s in r["probes"]}
+    out = {f"arrival_{z}": r["results"].get(f"arrival_{i}", -1) for i, z in enumerate(Z)}
+    for field, name in (("pressure", "pressure"), ("displacement", "displacement")):
+        s, n = series[field], len(Z)
+        for i, z in enumerate(Z):  # component 0: radial at (RI, 0, z) and the pressure itself on the axis
+            out[f"peak_{name}_{z}"] = first_peak(s["t"], [s["values"][s["components"] * (n * k + i)] for k in range(len(s["t"]))])
+    out["interface_l2"] = r["results"]["interface_displacement_l2"]
+    return {k: ("" if v is None or (k.startswith("arrival") and v < 0) else v) for k, v in out.items()}
+
+
+def command(config, scheme, geometry, level, dt, report):
+    return (f"mpiexec -n 2 {APP} -options_file scenes/fsi_tube1_linear.opts {CONFIGS[config][1]} -mesh {mesh(level, geometry)} "
+            f"-dt {dt:g} -t_final {T_FINAL:g} -time_scheme {scheme} {PROBES} -report {report}")
+
+
+def load():
+    return list(csv.DictReader(open(OUT + ".csv"))) if os.path.exists(OUT + ".csv") else []
+
+
+def commands_of(rows):
+    return [command(r["config"], r["scheme"], r["geometry"], int(r["level"]), float(r["dt"]), "report.json") for r in rows]
+
+
+def main():
+    rows, start = load(), loadavg()
+    done = {tuple(str(r[k]) for k in KEY) for r in rows}
+    report = os.path.join(tempfile.mkdtemp(), "report.json")
+    for level in map(int, arg("--levels", ["0", "1", "2"])):
+        for geometry in arg("--geometry", ["straight", "curved"]):
+            for scheme in arg("--schemes", ["backward_euler", "bdf2"]):
+                for config in arg("--configs", list(CONFIGS)):
+                    for dt in DTS:
+                        key = (config, scheme, geometry, str(level), f"{dt:g}")
+                        if key in done or (config == "mumps" and level > 0 and "--configs" not in sys.argv):
+                            continue
+                        r = run_report(command(config, scheme, geometry, level, dt, report), report, 4 * 3600)
+                        if not r:
+                            print(f"no report: {key}", flush=True)
+                            continue
+                        newton = sum(s["newton"] for s in r["steps"])
+                        row = dict(zip(KEY, key), unknowns=sum(r["unknowns"].values()), fluid_unknowns=r["unknowns"]["fluid"],
+                                   steps=len(r["steps"]), converged=int(all(s["reason"].startswith("CONVERGED") for s in r["steps"])),
+                                   newton=newton, krylov=sum(s["krylov"] for s in r["steps"]), seconds=round(r["seconds"]["total"], 2),
+                                   peak_memory_mib=r["peak_memory_mib"], **quantities(r))
+                        print(row, flush=True)
+                        rows.append(row)
+                        write_results(OUT, rows, commands_of(rows), "scripts/bench_fsi_work_precision.py (one run each; the rows of earlier calls kept)", start)
+    errors(rows)
+    plot(rows)
+
+
+def observed(q, ratio):
+    """Order from three values on a sequence refined by `ratio` each time, clipped to [0.5, 4]; None if flat."""
+    d1, d2 = abs(q[0] - q[1]), abs(q[1] - q[2])
+    if d1 == 0 or d2 == 0:
+        return None
+    return min(4.0, max(0.5, math.log(d1 / d2) / math.log(ratio)))
+
+
+def errors(rows):
+    """Per scheme and geometry: the observed orders and Richardson's reference of each quantity
+    (printed and written to work_precision_fsi_orders.csv); each row's relative errors are
+    returned as {row index: {quantity: error}}."""
+    out, table = {}, []
+    for scheme in ("backward_euler", "bdf2"):
+        for geometry in ("straight", "curved"):
+            runs = [r for r in rows if r["scheme"] == scheme and r["geometry"] == geometry]
+            levels = sorted({int(r["level"]) for r in runs})
+            if not runs:
+                continue
+            top = max(levels)
+
+            def value(level, dt, q):  # any configuration: they solve the same discrete problem
+                v = [float(r[q]) for r in runs if int(r["level"]) == level and math.isclose(float(r["dt"]), dt) and r[q] != ""]
+                return sum(v) / len(v) if v else None
+
+            h = {lv: float(next(r["fluid_unknowns"] for r in runs if int(r["level"]) == lv)) ** (-1 / 3) for lv in levels}
+            for q in QUANTITIES:
+                finest = value(top, DTS[-1], q)
+                if finest is None:
+                    continue
+                ref, row = finest, {"scheme": scheme, "geometry": geometry, "quantity": q, "finest": finest}
+                qt = [value(top, dt, q) for dt in DTS]
+                if None not in qt:
+                    pt = observed(qt, 2.0)
+                    row["order_dt"] = pt
+                    if pt:
+                        ref += (qt[2] - qt[1]) / (2 ** pt - 1)
+                if len(levels) >= 3:
+                    qh = [value(lv, DTS[-1], q) for lv in levels[-3:]]
+                    if None not in qh:
+                        ratio = math.sqrt(h[levels[-3]] / h[levels[-1]])  # geometric mean of the two refinements
+                        ph = observed(qh, ratio)
+                        row["order_h"] = ph
+                        if ph:
+                            ref += (qh[2] - qh[1]) / ((h[levels[-2]] / h[levels[-1]]) ** ph - 1)
+                row["reference"] = ref
+                table.append(row)
+                for r in runs:
+                    if r[q] != "":
+                        out.setdefault(id(r), {})[q] = abs(float(r[q]) - ref) / abs(ref)
+    if table:
+        keys = ["scheme", "geometry", "quantity", "finest", "order_dt", "order_h", "reference"]
+        with open(OUT + "_orders.csv", "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=keys)
+            w.writeheader()
+            w.writerows(table)
+        for row in table:
+            print(row)
+    return out
+
+
+def plot(rows):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    err = errors(rows)
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.6))
+    station = [q for q in QUANTITIES if q != "interface_l2"]
+    for ax, title, pick in ((axes[0], "interface displacement, L2 in space and time", lambda e: e.get("interface_l2")),
+                            (axes[1], "worst of arrival and first peaks at the three stations",
+                             lambda e: max((e[q] for q in station if q in e), default=None))):
+        for config, (name, _) in CONFIGS.items():
+            for scheme, style in (("backward_euler", "o-"), ("bdf2", "s--")):
+                for geometry in ("straight", "curved"):
+                    pts = sorted((float(r["seconds"]), pick(err.get(id(r), {}))) for r in rows
+                                 if r["config"] == config and r["scheme"] == scheme and r["geometry"] == geometry)
+                    pts = [p for p in pts if p[1]]
+                    if not pts:
+                        continue
+                    front, best = [], float("inf")  # the runs no faster run beats: what a user would pick
+                    for t, e in pts:
+                        if e < best:
+                            front.append((t, e))
+                            best = e
+                    ax.loglog([p[0] for p in front], [p[1] for p in front], style,
+                              label=f"{name}, {'BE' if scheme == 'backward_euler' else 'BDF2'}{', curved' if geometry == 'curved' else ''}")
+        ax.set_title(title, fontsize=9)
+        ax.set_xlabel("run time, 2 ranks (s)")
+        ax.set_ylabel("error against Richardson's reference (relative)")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=6)
+    fig.suptitle("coupled tube #1, linear wall, to 12 ms: levels 0-2 x dt 0.4/0.2/0.1 ms (each curve: its runs that no faster run beats)", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(OUT + ".png", dpi=110)
+
+
+if __name__ == "__main__":
+    plot(load()) if "--plot" in sys.argv else main()
