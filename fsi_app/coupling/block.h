@@ -74,7 +74,7 @@ private:
   };
   std::vector<Balance>   balance;
   std::vector<PetscReal> before;   /* volumes of the states before the first step recorded */
-  PetscReal              d2Before; /* int_Gamma |d|^2 dA of the state before it */
+  PetscReal              d2Before = 0; /* int_Gamma |d|^2 dA of the state before it */
 };
 
 } // namespace fsi

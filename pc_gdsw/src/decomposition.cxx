@@ -788,46 +788,35 @@ PetscErrorCode GDSWExtractSubdomainMatrices(PC pc, MatReuse reuse)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
   auto    &sub = *gd->sub;
-  const PetscInt n = (PetscInt)sub.size();
-  std::vector<PetscInt> U;
   Mat       AU;
   PetscBool sequential;
 
   PetscFunctionBegin;
   PetscCall(PetscObjectTypeCompare((PetscObject)gd->A, MATSEQAIJ, &sequential));
+  if (reuse == MAT_INITIAL_MATRIX && !sequential) { /* U, and each Omega_i^delta's positions in it */
+    std::vector<PetscInt> U;
+    for (auto &s : sub) {
+      PetscInt        no;
+      const PetscInt *ov;
+      PetscCall(ISGetLocalSize(s.overlap, &no));
+      PetscCall(ISGetIndices(s.overlap, &ov));
+      U.insert(U.end(), ov, ov + no);
+      PetscCall(ISRestoreIndices(s.overlap, &ov));
+    }
+    std::sort(U.begin(), U.end());
+    U.erase(std::unique(U.begin(), U.end()), U.end());
+    PetscCall(ISCreateGeneral(PETSC_COMM_SELF, (PetscInt)U.size(), U.data(), PETSC_COPY_VALUES, &gd->isU));
+    PetscCall(ISSetInfo(gd->isU, IS_SORTED, IS_LOCAL, PETSC_TRUE, PETSC_TRUE));
+    for (auto &s : sub) PetscCall(PositionsIn(s.overlap, U, &s.ovlInU));
+  }
   if (sequential) AU = gd->A; /* one rank: U is every row, A(U, U) is A */
   else {
-    if (reuse == MAT_INITIAL_MATRIX) {
-      for (auto &s : sub) {
-        PetscInt        no;
-        const PetscInt *ov;
-        PetscCall(ISGetLocalSize(s.overlap, &no));
-        PetscCall(ISGetIndices(s.overlap, &ov));
-        U.insert(U.end(), ov, ov + no);
-        PetscCall(ISRestoreIndices(s.overlap, &ov));
-      }
-      std::sort(U.begin(), U.end());
-      U.erase(std::unique(U.begin(), U.end()), U.end());
-      PetscCall(ISCreateGeneral(PETSC_COMM_SELF, (PetscInt)U.size(), U.data(), PETSC_COPY_VALUES, &gd->isU));
-      PetscCall(ISSetInfo(gd->isU, IS_SORTED, IS_LOCAL, PETSC_TRUE, PETSC_TRUE));
-    } else {
-      PetscInt        nU;
-      const PetscInt *u;
-      PetscCall(ISGetLocalSize(gd->isU, &nU));
-      PetscCall(ISGetIndices(gd->isU, &u));
-      U.assign(u, u + nU);
-      PetscCall(ISRestoreIndices(gd->isU, &u));
-    }
     PetscCall(MatCreateSubMatrices(gd->A, 1, &gd->isU, &gd->isU, gd->AU ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &gd->AU));
     AU = gd->AU[0];
   }
-  for (PetscInt i = 0; i < n; i++) {
-    Subdomain &s = sub[i];
-    IS         ovlInU;
-    if (sequential) PetscCall(PetscObjectReference((PetscObject)(ovlInU = s.overlap)));
-    else PetscCall(PositionsIn(s.overlap, U, &ovlInU));
-    PetscCall(GDSWSubmatrix(AU, ovlInU, ovlInU, gd->bs, reuse, &s.Aovl));
-    PetscCall(ISDestroy(&ovlInU));
+  for (auto &s : sub) {
+    IS rows = sequential ? s.overlap : s.ovlInU;
+    PetscCall(GDSWSubmatrix(AU, rows, rows, gd->bs, reuse, &s.Aovl));
     if (reuse == MAT_INITIAL_MATRIX) {
       const PetscInt *ov;
       PetscInt        no;

@@ -85,6 +85,7 @@ static PetscErrorCode PCReset_GDSW(PC pc)
   for (auto &s : *gd->sub) {
     PetscCall(ISDestroy(&s.nonoverlap));
     PetscCall(ISDestroy(&s.overlap));
+    PetscCall(ISDestroy(&s.ovlInU));
     PetscCall(ISDestroy(&s.isI));
     PetscCall(ISDestroy(&s.isG));
     PetscCall(ISDestroy(&s.nonInOvl));

@@ -48,6 +48,7 @@ struct Subdomain {
   std::vector<PetscInt> nodes;          /* Omega~_i: sorted global node ids */
   IS  nonoverlap = nullptr;             /* Omega~_i as global dofs */
   IS  overlap = nullptr;                /* Omega_i^delta as global dofs */
+  IS  ovlInU = nullptr;                 /* positions of Omega_i^delta's dofs within PC_GDSW::isU (several ranks) */
   /* interface view, filled by the interface module */
   std::vector<PetscInt> setOf;          /* per node: index into PC_GDSW::sets */
   std::vector<PetscInt> dirMask;        /* per node: bit c set if dof c is a Dirichlet dof */
