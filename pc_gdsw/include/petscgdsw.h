@@ -79,6 +79,8 @@ PETSC_EXTERN PetscErrorCode PCGDSWSetFirstLevelType(PC, PCGDSWFirstLevelType);
 PETSC_EXTERN PetscErrorCode PCGDSWGetFirstLevelType(PC, PCGDSWFirstLevelType *);
 PETSC_EXTERN PetscErrorCode PCGDSWSetReuseCoarseBasis(PC, PetscBool);
 PETSC_EXTERN PetscErrorCode PCGDSWGetReuseCoarseBasis(PC, PetscBool *);
+PETSC_EXTERN PetscErrorCode PCGDSWSetHugePages(PC, PetscBool);
+PETSC_EXTERN PetscErrorCode PCGDSWGetHugePages(PC, PetscBool *);
 
 /* after PCSetUp(): borrowed references */
 PETSC_EXTERN PetscErrorCode PCGDSWGetCoarseBasis(PC, Mat *);

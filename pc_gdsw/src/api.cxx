@@ -833,3 +833,61 @@ PetscErrorCode PCGDSWGetInterfaceCounts(PC pc, PetscInt *faces, PetscInt *edges,
   PetscUseMethod(pc, "PCGDSWGetInterfaceCounts_C", (PC, PetscInt *, PetscInt *, PetscInt *), (pc, faces, edges, vertices));
   PetscFunctionReturn(0);
 }
+
+/*@
+   PCGDSWSetHugePages - Sets whether `PCGDSW` asks for transparent huge pages for the local factors while it sets up
+
+   Logically Collective on pc
+
+   Input Parameters:
++  pc - the preconditioner context
+-  flg - `PETSC_TRUE` (the default) to map the blocks of 2 MiB or more that the set-up keeps on huge pages, `PETSC_FALSE` to leave them to malloc()
+
+   Options Database Key:
+.  -pc_gdsw_huge_pages <true,false> - sets the flag
+
+   Notes:
+   A fresh set-up writes the subdomain matrices and the first level's factors (CHOLMOD, UMFPACK) to memory touched for
+   the first time. Where the kernel gives transparent huge pages only on request (/sys/kernel/mm/transparent_hugepage/enabled
+   is madvise, the default of Debian and Ubuntu) every 4 KiB page of them costs a page fault; with this flag their blocks
+   of 2 MiB or more are mapped aligned to 2 MiB and advised MADV_HUGEPAGE, what the glibc tunable glibc.malloc.hugetlb=1
+   does for a whole process. The flag changes nothing where the kernel's mode is always or never, or on other systems. It
+   installs allocation functions in SuiteSparse_config once per process; they pass every other block to the functions
+   installed before. -ksp_view reports the bytes mapped, -info the kernel's mode.
+
+   Level: advanced
+
+.seealso: `PCGDSW`, `PCGDSWGetHugePages()`
+@*/
+PetscErrorCode PCGDSWSetHugePages(PC pc, PetscBool flg)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidLogicalCollectiveBool(pc, flg, 2);
+  PetscTryMethod(pc, "PCGDSWSetHugePages_C", (PC, PetscBool), (pc, flg));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetHugePages - Gets whether `PCGDSW` asks for transparent huge pages for the local factors
+
+   Not Collective
+
+   Input Parameter:
+.  pc - the preconditioner context
+
+   Output Parameter:
+.  flg - the flag
+
+   Level: advanced
+
+.seealso: `PCGDSW`, `PCGDSWSetHugePages()`
+@*/
+PetscErrorCode PCGDSWGetHugePages(PC pc, PetscBool *flg)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidBoolPointer(flg, 2);
+  PetscUseMethod(pc, "PCGDSWGetHugePages_C", (PC, PetscBool *), (pc, flg));
+  PetscFunctionReturn(0);
+}

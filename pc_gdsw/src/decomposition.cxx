@@ -686,10 +686,13 @@ PetscErrorCode GDSWBuildDecomposition(PC pc)
 
 /* The arrays of a submatrix made by GDSWSubmatrix(); j and a are left uninitialised (filled once:
    zeroing them first was a second pass over fresh pages). */
+struct HugeDelete {
+  void operator()(void *p) const { GDSWHugeFree(p); }
+};
 struct CSR {
-  std::vector<PetscInt>          i;
-  std::unique_ptr<PetscInt[]>    j;
-  std::unique_ptr<PetscScalar[]> a;
+  std::vector<PetscInt>                      i;
+  std::unique_ptr<PetscInt[], HugeDelete>    j;
+  std::unique_ptr<PetscScalar[], HugeDelete> a;
 };
 
 static PetscErrorCode DestroyCSR(void *ctx)
@@ -733,8 +736,12 @@ PetscErrorCode GDSWSubmatrix(Mat M, IS rows, IS cols, PetscInt bs, MatReuse reus
       csr->i[k + 1] = csr->i[k] + len;
     }
     const PetscInt nnz = std::max<PetscInt>(csr->i[nr], 1); /* nonnull arrays */
-    csr->j.reset(new PetscInt[nnz]);
-    csr->a.reset(new PetscScalar[nnz]);
+    csr->j.reset((PetscInt *)GDSWHugeMalloc(nnz * sizeof(PetscInt)));
+    csr->a.reset((PetscScalar *)GDSWHugeMalloc(nnz * sizeof(PetscScalar)));
+    if (!csr->j || !csr->a) {
+      delete csr;
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_MEM, "PCGDSW: out of memory for a subdomain matrix of %" PetscInt_FMT " nonzeros", nnz);
+    }
     for (PetscInt k = 0, p = 0; k < nr; k++)
       for (PetscInt e = ia[r[k]]; e < ia[r[k] + 1]; e++)
         if (map[ja[e]] >= 0) csr->j[p] = map[ja[e]], csr->a[p++] = va[e];

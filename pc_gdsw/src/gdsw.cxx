@@ -182,11 +182,31 @@ static PetscErrorCode GetAIJOperator(PC pc, MatReuse reuse)
   PetscFunctionReturn(0);
 }
 
+/* step() with the blocks it keeps (the subdomain matrices, the first level's factors) on huge
+   pages. Not the harmonic extension: its factors and right-hand sides are freed subdomain by
+   subdomain, and malloc()'s heap recycles them without a page fault. */
+template <class Step>
+static PetscErrorCode OnHugePages(PC pc, Step step)
+{
+  PC_GDSW  *gd = (PC_GDSW *)pc->data;
+  PetscBool began;
+  size_t    mark, bytes;
+
+  PetscFunctionBegin;
+  PetscCall(GDSWHugePagesBegin(pc, gd->hugePages, &began, &mark));
+  PetscErrorCode ierr = step();
+  PetscCall(GDSWHugePagesEnd(began, mark, &bytes));
+  PetscCall(ierr);
+  gd->hugeBytes += bytes;
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode SetUp(PC pc)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
 
   PetscFunctionBegin;
+  gd->hugeBytes   = 0;
   PetscBool fresh = (PetscBool)(!pc->setupcalled || pc->flag == DIFFERENT_NONZERO_PATTERN);
   if (!fresh) {
     /* MatZeroRows() on other rows keeps the pattern but changes which dofs Phi must exclude */
@@ -199,7 +219,7 @@ static PetscErrorCode SetUp(PC pc)
     PetscCall(GetAIJOperator(pc, MAT_INITIAL_MATRIX));
     PetscCall(PetscLogEventBegin(GDSW_Decomposition, pc, 0, 0, 0));
     PetscCall(GDSWBuildDecomposition(pc));
-    PetscCall(GDSWExtractSubdomainMatrices(pc, MAT_INITIAL_MATRIX));
+    PetscCall(OnHugePages(pc, [&] { return GDSWExtractSubdomainMatrices(pc, MAT_INITIAL_MATRIX); }));
     PetscCall(IsSymmetric(pc, &gd->symmetric));
     PetscCall(PetscLogEventEnd(GDSW_Decomposition, pc, 0, 0, 0));
     PetscCall(PetscLogEventBegin(GDSW_Interface, pc, 0, 0, 0));
@@ -212,7 +232,7 @@ static PetscErrorCode SetUp(PC pc)
       if (gd->coarseActive) PetscCall(GDSWSetUpCoarseSolver(pc, PETSC_TRUE));
       else PetscCall(PetscInfo(pc, "the decomposition has no interface: no coarse level\n"));
     }
-    PetscCall(GDSWSetUpFirstLevel(pc, MAT_INITIAL_MATRIX));
+    PetscCall(OnHugePages(pc, [&] { return GDSWSetUpFirstLevel(pc, MAT_INITIAL_MATRIX); }));
     if (gd->coarseActive && gd->combination != PC_COMPOSITE_ADDITIVE) PetscCall(MatCreateVecs(gd->A, &gd->tmp1, &gd->tmp2)); /* residual after the coarse correction */
   } else {
     /* same pattern, new values (Newton, time stepping): numeric refactorisations only */
@@ -221,7 +241,7 @@ static PetscErrorCode SetUp(PC pc)
       if (!gd->reuseCoarseBasis) PetscCall(GDSWUpdateCoarseBasis(pc));
       PetscCall(GDSWSetUpCoarseSolver(pc, (PetscBool)!gd->reuseCoarseBasis));
     }
-    PetscCall(GDSWSetUpFirstLevel(pc, MAT_REUSE_MATRIX));
+    PetscCall(OnHugePages(pc, [&] { return GDSWSetUpFirstLevel(pc, MAT_REUSE_MATRIX); }));
   }
   PetscFunctionReturn(0);
 }
@@ -341,6 +361,7 @@ static PetscErrorCode PCSetFromOptions_GDSW(PC pc, PetscOptionItems *PetscOption
   PetscCall(CheckOptionValue(pc, "-pc_gdsw_combination", OPTION_ELIST, CombinationTypes, nullptr));
   PetscCall(CheckOptionValue(pc, "-pc_gdsw_first_level_type", OPTION_ELIST, PCGDSWFirstLevelTypes, nullptr));
   PetscCall(CheckOptionValue(pc, "-pc_gdsw_reuse_coarse_basis", OPTION_BOOL, nullptr, nullptr));
+  PetscCall(CheckOptionValue(pc, "-pc_gdsw_huge_pages", OPTION_BOOL, nullptr, nullptr));
   PetscCall(CheckOptionValue(pc, "-pc_gdsw_local_solver", OPTION_ELIST, PCGDSWLocalSolverTypes, nullptr));
   PetscCall(CheckOptionValue(pc, "-pc_gdsw_local_condition_max", OPTION_REAL, nullptr, ConditionRange));
   PetscOptionsHeadBegin(PetscOptionsObject, "GDSW two-level overlapping Schwarz options");
@@ -369,6 +390,8 @@ static PetscErrorCode PCSetFromOptions_GDSW(PC pc, PetscOptionItems *PetscOption
   if (flg) PetscCall(PCGDSWSetFirstLevelType(pc, firstLevel));
   PetscCall(PetscOptionsBool("-pc_gdsw_reuse_coarse_basis", "Keep Phi when the operator's values change; recompute only A_0 = Phi^T A Phi", "PCGDSWSetReuseCoarseBasis", gd->reuseCoarseBasis, &b, &flg));
   if (flg) PetscCall(PCGDSWSetReuseCoarseBasis(pc, b));
+  PetscCall(PetscOptionsBool("-pc_gdsw_huge_pages", "During set-up, the blocks of 2 MiB or more it keeps (local factors, subdomain matrices) on transparent huge pages where the kernel gives them on request (mode madvise)", "PCGDSWSetHugePages", gd->hugePages, &b, &flg));
+  if (flg) PetscCall(PCGDSWSetHugePages(pc, b));
   PetscOptionsHeadEnd();
   PetscFunctionReturn(0);
 }
@@ -420,6 +443,11 @@ static PetscErrorCode PCView_GDSW(PC pc, PetscViewer viewer)
     PetscCall(PetscViewerASCIIPrintf(viewer, "  local solvers adaptive: incomplete where its condition estimate is at most %s (-pc_gdsw_local_condition_max), exact elsewhere\n", bound));
   }
   PetscCall(GDSWViewLocalSolvers(pc, viewer));
+  if (gd->hugePages) {
+    double mib = (double)gd->hugeBytes / 1048576.0;
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &mib, 1, MPI_DOUBLE, MPI_SUM, PetscObjectComm((PetscObject)pc)));
+    if (mib > 0) PetscCall(PetscViewerASCIIPrintf(viewer, "  blocks of 2 MiB or more on transparent huge pages in the last set-up: %.0f MiB (-pc_gdsw_huge_pages)\n", mib));
+  }
   /* the first local solver stands for all: they share their options */
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)pc), &rank));
@@ -705,6 +733,20 @@ static PetscErrorCode PCGDSWSetReuseCoarseBasis_GDSW(PC pc, PetscBool flg)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode PCGDSWSetHugePages_GDSW(PC pc, PetscBool flg)
+{
+  PetscFunctionBegin;
+  ((PC_GDSW *)pc->data)->hugePages = flg;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWGetHugePages_GDSW(PC pc, PetscBool *flg)
+{
+  PetscFunctionBegin;
+  *flg = ((PC_GDSW *)pc->data)->hugePages;
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode PCGDSWGetReuseCoarseBasis_GDSW(PC pc, PetscBool *flg)
 {
   PetscFunctionBegin;
@@ -782,6 +824,8 @@ static PetscErrorCode ComposeMethods(PC pc, PetscBool add)
   GDSW_COMPOSE(PCGDSWGetFirstLevelType);
   GDSW_COMPOSE(PCGDSWSetReuseCoarseBasis);
   GDSW_COMPOSE(PCGDSWGetReuseCoarseBasis);
+  GDSW_COMPOSE(PCGDSWSetHugePages);
+  GDSW_COMPOSE(PCGDSWGetHugePages);
   GDSW_COMPOSE(PCGDSWGetCoarseBasis);
   GDSW_COMPOSE(PCGDSWGetCoarseOperator);
   GDSW_COMPOSE(PCGDSWGetCoarseKSP);
@@ -830,6 +874,7 @@ static PetscErrorCode PCDestroy_GDSW(PC pc)
 .  -pc_gdsw_combination <symmetric_multiplicative> - symmetric_multiplicative (balanced), additive or multiplicative (see `PCGDSWSetCombinationType()`)
 .  -pc_gdsw_first_level_type <additive> - additive or restricted, RAS (see `PCGDSWSetFirstLevelType()`)
 .  -pc_gdsw_reuse_coarse_basis <false> - keep Phi when the operator's values change (see `PCGDSWSetReuseCoarseBasis()`)
+.  -pc_gdsw_huge_pages <true> - during set-up, the blocks of 2 MiB or more that it keeps (local factors, subdomain matrices) on transparent huge pages where the kernel gives them on request (see `PCGDSWSetHugePages()`)
 .  -pc_gdsw_local_solver <exact> - exact, incomplete or adaptive local solvers of the first level (see `PCGDSWSetLocalSolverType()`)
 -  -pc_gdsw_local_condition_max <25> - the adaptive local solvers' bound (see `PCGDSWSetLocalConditionMax()`)
 
@@ -888,6 +933,7 @@ PETSC_EXTERN PetscErrorCode PCCreate_GDSW(PC pc)
   gd->rotations        = PETSC_TRUE;
   gd->rgdswWeights     = PC_GDSW_RGDSW_WEIGHTS_DISTANCE;
   gd->reuseCoarseBasis = PETSC_FALSE;
+  gd->hugePages        = PETSC_TRUE;
   gd->nUser            = -1;
   gd->sub              = new std::vector<gdsw::Subdomain>();
   gd->sets             = new std::vector<std::vector<PetscInt>>();

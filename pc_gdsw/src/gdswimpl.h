@@ -7,6 +7,7 @@
      coarse_solver.cxx  the solver of A_0
      first_level.cxx    local solvers on Omega_i^delta and their restriction/prolongation
      threads.cxx        one thread per rank while the set-up factors
+     huge_pages.cxx     the local factors on transparent huge pages
      gdsw.cxx           the PC object: options, setup order, apply and its transpose, view, public API */
 #pragma once
 
@@ -85,6 +86,7 @@ typedef struct {
   PetscBool             rotations;
   PCGDSWRGDSWWeightType rgdswWeights;
   PetscBool             reuseCoarseBasis;
+  PetscBool             hugePages;        /* -pc_gdsw_huge_pages: the set-up's large blocks on transparent huge pages */
   /* input */
   PetscInt  nUser;                        /* user subdomains (PCGDSWSetSubdomains), -1 if none */
   IS       *userNon, *userOvl;
@@ -110,6 +112,7 @@ typedef struct {
   PetscInt  nDirichletRows;               /* global count */
   std::vector<PetscInt> *dirichletMask;   /* per owned node, its Dirichlet components as bits (the last fresh set-up's) */
   PetscInt  counts[3];                    /* faces, edges, vertices (global) */
+  size_t    hugeBytes;                    /* given out on huge pages by the last set-up (this rank) */
   /* coarse level */
   Mat Phi, A0;
   Mat APhi;                               /* W = A Phi, for the balanced combination */
@@ -151,6 +154,10 @@ PETSC_INTERN PetscErrorCode GDSWComposeRowRanks(PC, gdsw::Subdomain &, gdsw::Loc
 PETSC_INTERN PetscErrorCode GDSWRegisterOrdering(void);
 PETSC_INTERN PetscErrorCode GDSWSerialRegionsBegin(PetscInt *);
 PETSC_INTERN PetscErrorCode GDSWSerialRegionsEnd(PetscInt);
+PETSC_INTERN PetscErrorCode GDSWHugePagesBegin(PC, PetscBool, PetscBool *, size_t *);
+PETSC_INTERN PetscErrorCode GDSWHugePagesEnd(PetscBool, size_t, size_t *);
+PETSC_INTERN void          *GDSWHugeMalloc(size_t);
+PETSC_INTERN void           GDSWHugeFree(void *);
 PETSC_INTERN PetscInt       GDSWSubdomainSizeTarget(const PC_GDSW *);
 
 PETSC_INTERN PetscLogEvent GDSW_Decomposition, GDSW_Interface, GDSW_Basis, GDSW_Extension,
