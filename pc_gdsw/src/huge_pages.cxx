@@ -25,15 +25,12 @@
 #if defined(__linux__)
   #include <sys/mman.h>
 #endif
-#if defined(__GLIBC__)
-  #include <malloc.h>
-#endif
 
 namespace {
 #if defined(MADV_HUGEPAGE)
 
 constexpr size_t hugePage = (size_t)2 << 20;
-constexpr size_t spareMax = (size_t)64 << 20; /* bytes kept for reuse at most */
+constexpr size_t spareMax = (size_t)256 << 20; /* bytes kept for reuse at most */
 
 struct Hooks {
   void *(*malloc_func)(size_t);
@@ -207,11 +204,6 @@ PetscErrorCode GDSWHugePagesBegin(PC pc, PetscBool use, PetscBool *began, size_t
   if (!told) PetscCall(PetscInfo(pc, installed ? "the set-up's blocks of 2 MiB or more go on transparent huge pages (the kernel gives them on request)\n" : "transparent huge pages are not given on request here (/sys/kernel/mm/transparent_hugepage/enabled is not madvise): -pc_gdsw_huge_pages changes nothing\n"));
   told = true;
   if (!installed) PetscFunctionReturn(0);
-  #if defined(__GLIBC__)
-  /* what the step takes comes from fresh mappings, not from malloc()'s free heap (the harmonic
-     extension's right-hand sides, just freed): give that back, or the peak holds both */
-  malloc_trim(0);
-  #endif
   std::lock_guard<std::mutex> guard(*lock);
   active++;
   *began = PETSC_TRUE;
