@@ -7,12 +7,13 @@ step split into assembly, preconditioner set-up and Krylov iterations (from the 
 report), with the structure preconditioned by
   GDSW (element subdomains, overlap 1), GDSW-nr (no rotations), GDSW reuse (the coarse basis
   kept across Newton and time steps: only A_0 and the local factors renewed), OS1 (the same subdomains, no
-  coarse level), PCASM (algebraic, one block per rank, overlap 1), GAMG (rigid-body modes).
+  coarse level), PCASM (algebraic, one block per rank, overlap 1), GAMG and ML (rigid-body modes).
 2 MPI ranks. CG for the linear law, GMRES for the others, rtol 1e-6; Newton rtol/atol 1e-8.
   scripts/bench_wall.py proxy [T]  tube1_L0 (12,240 dofs), every material and dt 1e-4, 5e-4, up to
                                    T (default 0.003 s): bench/results/wall_proxy.{csv,cmd}
   scripts/bench_wall.py seed [N]   tube1 at the seed's Table 1 size (357,927 dofs, made on
-                                   demand), Neo-Hooke, dt 5e-4, N steps (default 1), peak memory:
+                                   demand), Neo-Hooke and arterial, dt 5e-4, N steps (default 1),
+                                   every preconditioner above and ML, peak memory:
                                    bench/results/wall_seed.{csv,cmd}
   scripts/bench_wall.py tubes [T]  the walls of tubes #2 and #3 (tube2_L0, tube3_L0), every
                                    material, dt 5e-4 up to T (default 0.001 s), GDSW, OS1, PCASM:
@@ -35,6 +36,7 @@ PCS = {
     "OS1": "-pc_type gdsw -pc_gdsw_coarse_space none",
     "PCASM": "-pc_type asm -pc_asm_overlap 1 -pc_asm_type basic -sub_pc_type cholesky -sub_pc_factor_mat_solver_type cholmod",
     "GAMG": "-pc_type gamg -pc_gamg_threshold 0.01 -mg_levels_ksp_max_it 2",
+    "ML": "-pc_type ml",  # takes the rigid-body modes the wall attaches as near null space
 }
 MATERIALS = {"linear": "-structure_material linear -structure_E 4e5 -structure_nu 0.3 -snes_type ksponly -ksp_type cg",
              "neohooke": "-structure_material neohooke -snes_type newtonls -ksp_type gmres",
@@ -77,7 +79,7 @@ def main():
         mesh = os.path.join(top, "meshes", "tube1_seed.msh")
         if not os.path.exists(mesh):
             subprocess.run([os.path.join(top, "scripts", "make-meshes"), "tube1", "seed"], check=True)
-        cases = [(mesh, "neohooke", "5e-4", str(5e-4 * steps), pc, 64) for pc in ("GDSW", "GDSW reuse", "OS1", "PCASM", "GAMG")]
+        cases = [(mesh, m, "5e-4", str(5e-4 * steps), pc, 64) for m in ("neohooke", "arterial") for pc in ("GDSW", "GDSW reuse", "OS1", "PCASM", "GAMG", "ML")]
     elif mode == "tubes":
         T = sys.argv[2] if len(sys.argv) > 2 else "0.001"
         cases = [(os.path.join(top, "meshes", f"{t}_L0.msh"), m, "5e-4", T, pc, 8) for t in ("tube2", "tube3") for m in MATERIALS for pc in ("GDSW", "GDSW reuse", "OS1", "PCASM")]

@@ -48,6 +48,7 @@ static PetscErrorCode PrintSettings(PC pc)
   PCCompositeType       combination;
   PCGDSWFirstLevelType  first;
   PCGDSWLocalSolverType local;
+  PCGDSWLocalPrecision  precision;
   PetscReal             conditionMax;
   PetscBool             rotations, reuse, repartition, huge;
 
@@ -65,9 +66,10 @@ static PetscErrorCode PrintSettings(PC pc)
   PetscCall(PCGDSWGetLocalSolverType(pc, &local));
   PetscCall(PCGDSWGetLocalConditionMax(pc, &conditionMax));
   PetscCall(PCGDSWGetHugePages(pc, &huge));
+  PetscCall(PCGDSWGetLocalPrecision(pc, &precision));
   const char *const combinationName = combination == PC_COMPOSITE_ADDITIVE ? "additive" : combination == PC_COMPOSITE_MULTIPLICATIVE ? "multiplicative" : "symmetric_multiplicative";
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "settings: subdomains %" PetscInt_FMT " repartition %d subdomain_size %" PetscInt_FMT " overlap %" PetscInt_FMT " coarse_space %s rgdsw_weights %s rotations %d combination %s first_level_type %s reuse_coarse_basis %d local_solver %s local_condition_max %g huge_pages %d\n",
-                        nsub, (int)repartition, size, overlap, PCGDSWCoarseSpaceTypes[coarse], PCGDSWRGDSWWeightTypes[weights], (int)rotations, combinationName, PCGDSWFirstLevelTypes[first], (int)reuse, PCGDSWLocalSolverTypes[local], (double)conditionMax, (int)huge));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "settings: subdomains %" PetscInt_FMT " repartition %d subdomain_size %" PetscInt_FMT " overlap %" PetscInt_FMT " coarse_space %s rgdsw_weights %s rotations %d combination %s first_level_type %s reuse_coarse_basis %d local_solver %s local_condition_max %g local_precision %s huge_pages %d\n",
+                        nsub, (int)repartition, size, overlap, PCGDSWCoarseSpaceTypes[coarse], PCGDSWRGDSWWeightTypes[weights], (int)rotations, combinationName, PCGDSWFirstLevelTypes[first], (int)reuse, PCGDSWLocalSolverTypes[local], (double)conditionMax, PCGDSWLocalPrecisions[precision], (int)huge));
   PetscFunctionReturn(0);
 }
 

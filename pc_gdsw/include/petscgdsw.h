@@ -11,6 +11,10 @@
 
 #define PCGDSW "gdsw"
 
+/* A Cholesky factorisation (MatSolverType) of sequential AIJ matrices: CHOLMOD's factor, kept and
+   applied in single precision where that solves to within 1e-3 of the double one. */
+#define MATSOLVERCHOLMODSINGLE "cholmod_single"
+
 /* Which coarse space the second level uses. */
 typedef enum {
   PC_GDSW_COARSE_GDSW,  /* null space on every interface component (faces, edges, vertices) */
@@ -43,6 +47,13 @@ typedef enum {
 } PCGDSWLocalSolverType;
 PETSC_EXTERN const char *const PCGDSWLocalSolverTypes[];
 
+/* The precision the first level's Cholesky factors are kept and applied in. */
+typedef enum {
+  PC_GDSW_LOCAL_PRECISION_DOUBLE, /* CHOLMOD's factor as it is */
+  PC_GDSW_LOCAL_PRECISION_SINGLE  /* MATSOLVERCHOLMODSINGLE: single precision where it solves to within 1e-3 of double */
+} PCGDSWLocalPrecision;
+PETSC_EXTERN const char *const PCGDSWLocalPrecisions[];
+
 PETSC_EXTERN PetscErrorCode PCGDSWRegister(void);
 
 /* the decomposition */
@@ -62,6 +73,8 @@ PETSC_EXTERN PetscErrorCode PCGDSWSetLocalSolverType(PC, PCGDSWLocalSolverType);
 PETSC_EXTERN PetscErrorCode PCGDSWGetLocalSolverType(PC, PCGDSWLocalSolverType *);
 PETSC_EXTERN PetscErrorCode PCGDSWSetLocalConditionMax(PC, PetscReal);
 PETSC_EXTERN PetscErrorCode PCGDSWGetLocalConditionMax(PC, PetscReal *);
+PETSC_EXTERN PetscErrorCode PCGDSWSetLocalPrecision(PC, PCGDSWLocalPrecision);
+PETSC_EXTERN PetscErrorCode PCGDSWGetLocalPrecision(PC, PCGDSWLocalPrecision *);
 
 /* the coarse space and how the levels are combined */
 PETSC_EXTERN PetscErrorCode PCGDSWSetCoarseSpaceType(PC, PCGDSWCoarseSpaceType);

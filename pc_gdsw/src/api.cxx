@@ -677,6 +677,69 @@ PetscErrorCode PCGDSWGetLocalConditionMax(PC pc, PetscReal *c)
 }
 
 /*@
+   PCGDSWSetLocalPrecision - Sets the precision in which `PCGDSW` keeps and applies the Cholesky factors of its first level
+
+   Logically Collective on pc
+
+   Input Parameters:
++  pc - the preconditioner context
+-  precision - `PC_GDSW_LOCAL_PRECISION_SINGLE` (the default) or `PC_GDSW_LOCAL_PRECISION_DOUBLE`
+
+   Options Database Key:
+.  -pc_gdsw_local_precision <single,double> - sets the precision
+
+   Notes:
+   The factors are computed by CHOLMOD in double precision either way. With single precision
+   (`MATSOLVERCHOLMODSINGLE`, "cholmod_single") each factor is then rounded to single
+   precision and its double values are freed: the factors take half the memory, and the
+   triangular solves of every application, which read the whole factor for few flops and are
+   limited by memory bandwidth, take about half the time. Each factorisation checks itself on a
+   fixed pseudo-random right-hand side; where the single-precision solution deviates from the
+   double one by more than 1e-3 (relative), that factor stays in double precision (-info names
+   it). -ksp_view counts the factors kept in single precision.
+
+   Only symmetric operators are affected: LU factors (UMFPACK), incomplete factors and the
+   interior solves of the harmonic extension stay in double precision. An explicit
+   -pc_gdsw_sub_pc_factor_mat_solver_type overrides this setting.
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWLocalPrecision`, `PCGDSWGetLocalPrecision()`, `PCGDSWSetLocalSolverType()`
+@*/
+PetscErrorCode PCGDSWSetLocalPrecision(PC pc, PCGDSWLocalPrecision precision)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidLogicalCollectiveEnum(pc, precision, 2);
+  PetscTryMethod(pc, "PCGDSWSetLocalPrecision_C", (PC, PCGDSWLocalPrecision), (pc, precision));
+  PetscFunctionReturn(0);
+}
+
+/*@
+   PCGDSWGetLocalPrecision - Gets the precision in which `PCGDSW` keeps and applies the Cholesky factors of its first level
+
+   Not Collective
+
+   Input Parameter:
+.  pc - the preconditioner context
+
+   Output Parameter:
+.  precision - the precision
+
+   Level: intermediate
+
+.seealso: `PCGDSW`, `PCGDSWSetLocalPrecision()`
+@*/
+PetscErrorCode PCGDSWGetLocalPrecision(PC pc, PCGDSWLocalPrecision *precision)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidPointer(precision, 2);
+  PetscUseMethod(pc, "PCGDSWGetLocalPrecision_C", (PC, PCGDSWLocalPrecision *), (pc, precision));
+  PetscFunctionReturn(0);
+}
+
+/*@
    PCGDSWSetReuseCoarseBasis - Sets whether `PCGDSW` keeps its coarse basis Phi when the operator's values change with the same nonzero pattern
 
    Logically Collective on pc

@@ -48,7 +48,7 @@ static PetscErrorCode SwitchToLU(KSP ksp)
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(KSPGetOperators(ksp, &A, nullptr));
   PetscCall(PCFactorGetMatSolverType(pc, &asked));
-  if (asked && strcmp(asked, MATSOLVERCHOLMOD)) PetscCall(PetscStrncpy(solver, asked, sizeof(solver)));
+  if (asked && strcmp(asked, MATSOLVERCHOLMOD) && strcmp(asked, MATSOLVERCHOLMODSINGLE)) PetscCall(PetscStrncpy(solver, asked, sizeof(solver)));
 #if defined(PETSC_HAVE_SUITESPARSE)
   else PetscCall(PetscStrncpy(solver, MATSOLVERUMFPACK, sizeof(solver)));
 #endif
@@ -83,7 +83,7 @@ static PetscErrorCode TryCholesky(PC pc, KSP ksp, Subdomain &s, LocalMatrix whic
   PetscFunctionBegin;
   PetscCall(KSPGetPC(ksp, &lpc));
   PetscCall(PCFactorGetMatSolverType(lpc, &solver));
-  if (solver && !strcmp(solver, MATSOLVERCHOLMOD)) cholmod = PETSC_TRUE;
+  if (solver && (!strcmp(solver, MATSOLVERCHOLMOD) || !strcmp(solver, MATSOLVERCHOLMODSINGLE))) cholmod = PETSC_TRUE;
   if (cholmod) {
     PetscCall(PCGetOptionsPrefix(lpc, &prefix));
     PetscCall(PetscSNPrintf(print, sizeof(print), "-%smat_cholmod_print", prefix ? prefix : ""));
@@ -107,6 +107,9 @@ static PetscErrorCode TryCholesky(PC pc, KSP ksp, Subdomain &s, LocalMatrix whic
   PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
   ierr = KSPSetUp(ksp);
   PetscCall(PetscPopErrorHandler());
+  /* a wrong option of the factorisation is the user's error, not a matrix Cholesky cannot do:
+     set up again to raise it with its message */
+  if (ierr == PETSC_ERR_ARG_OUTOFRANGE || ierr == PETSC_ERR_ARG_WRONG) PetscCall(KSPSetUp(ksp));
   if (quiet) PetscCall(PetscOptionsClearValue(options, print));
   if (ours) PetscCall(PetscOptionsClearValue(options, nmethods));
   if (!ierr) PetscCall(PCGetFailedReason(lpc, &reason));
@@ -204,7 +207,13 @@ PetscErrorCode GDSWSetUpLocalSolver(PC pc, KSP ksp, Subdomain &s, LocalMatrix wh
   PetscBool incomplete;
   PetscCall(PetscObjectTypeCompare((PetscObject)lpc, PCLU, &lu));
   PetscCall(PetscObjectTypeCompareAny((PetscObject)lpc, &incomplete, PCICC, PCILU, ""));
-  kind = ok ? gdsw::CHOLESKY : (cholesky || failedBefore ? gdsw::LU_NOT_SPD : (lu ? gdsw::LU : incomplete ? gdsw::INCOMPLETE : gdsw::OTHER));
+  PetscBool single = PETSC_FALSE;
+  if (ok) {
+    Mat F;
+    PetscCall(PCFactorGetMatrix(lpc, &F));
+    PetscCall(GDSWFactorIsSingle(F, &single));
+  }
+  kind = ok ? (single ? gdsw::CHOLESKY_SINGLE : gdsw::CHOLESKY) : (cholesky || failedBefore ? gdsw::LU_NOT_SPD : (lu ? gdsw::LU : incomplete ? gdsw::INCOMPLETE : gdsw::OTHER));
   PetscCall(FactorFailure(ksp, &failure));
   if (!failure) PetscFunctionReturn(0);
   PetscCall(ZeroRow(pc, s, which, A, &dof));
@@ -221,13 +230,13 @@ PetscErrorCode GDSWSetUpLocalSolver(PC pc, KSP ksp, Subdomain &s, LocalMatrix wh
 PetscErrorCode GDSWViewLocalSolvers(PC pc, PetscViewer viewer)
 {
   PC_GDSW                 *gd = (PC_GDSW *)pc->data;
-  static const char *const names[] = {nullptr, "Cholesky", "LU", "LU instead of Cholesky (not symmetric positive definite)", "incomplete (ICC/ILU)", "other solvers"};
-  PetscInt                 local[2][6] = {{0}}, count[2][6];
+  static const char *const names[] = {nullptr, "Cholesky", "Cholesky kept in single precision", "LU", "LU instead of Cholesky (not symmetric positive definite)", "incomplete (ICC/ILU)", "other solvers"};
+  PetscInt                 local[2][7] = {{0}}, count[2][7];
 
   PetscFunctionBegin;
   for (const auto &s : *gd->sub)
     for (int m = 0; m < 2; m++) local[m][s.factorisation[m]]++;
-  PetscCallMPI(MPIU_Allreduce(local, count, 12, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)pc)));
+  PetscCallMPI(MPIU_Allreduce(local, count, 14, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)pc)));
   for (int m = 0; m < 2; m++) {
     std::string line;
     for (int k = gdsw::CHOLESKY; k <= gdsw::OTHER; k++)
@@ -284,8 +293,9 @@ static PetscErrorCode CreateScatters(PC pc)
   PetscFunctionReturn(0);
 }
 
-/* The local solver's defaults for -pc_gdsw_local_solver: the exact factorisation, or ICC(0) /
-   ILU(0) (PETSc's, natural ordering; ICC shifts its pivots to keep the factor positive). */
+/* The local solver's defaults for -pc_gdsw_local_solver: the exact factorisation (Cholesky kept
+   in single precision with -pc_gdsw_local_precision single), or ICC(0) / ILU(0) (PETSc's,
+   natural ordering; ICC shifts its pivots to keep the factor positive). */
 static PetscErrorCode DefaultLocalSolver(PC pc, KSP ksp, bool incomplete)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
@@ -293,7 +303,8 @@ static PetscErrorCode DefaultLocalSolver(PC pc, KSP ksp, bool incomplete)
 
   PetscFunctionBegin;
   if (!incomplete) {
-    PetscCall(GDSWDefaultFactorSolver(ksp, nullptr, gd->symmetric));
+    const bool single = GDSW_HAVE_SINGLE_FACTOR && gd->symmetric && gd->localPrecision == PC_GDSW_LOCAL_PRECISION_SINGLE;
+    PetscCall(GDSWDefaultFactorSolver(ksp, single ? MATSOLVERCHOLMODSINGLE : nullptr, gd->symmetric));
     PetscFunctionReturn(0);
   }
   PetscCall(KSPSetType(ksp, KSPPREONLY));

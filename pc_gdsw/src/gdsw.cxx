@@ -11,6 +11,7 @@ const char *const PCGDSWCoarseSpaceTypes[] = {"gdsw", "rgdsw", "none", "PCGDSWCo
 const char *const PCGDSWFirstLevelTypes[]  = {"additive", "restricted", "PCGDSWFirstLevelType", "PC_GDSW_FIRST_LEVEL_", nullptr};
 const char *const PCGDSWRGDSWWeightTypes[] = {"equal", "distance", "PCGDSWRGDSWWeightType", "PC_GDSW_RGDSW_WEIGHTS_", nullptr};
 const char *const PCGDSWLocalSolverTypes[] = {"exact", "incomplete", "adaptive", "PCGDSWLocalSolverType", "PC_GDSW_LOCAL_", nullptr};
+const char *const PCGDSWLocalPrecisions[]  = {"double", "single", "PCGDSWLocalPrecision", "PC_GDSW_LOCAL_PRECISION_", nullptr};
 /* the PCCompositeType values PCGDSW takes, in their order in PCCompositeTypes[] */
 static const char *const CombinationTypes[] = {"additive", "multiplicative", "symmetric_multiplicative", "PCCompositeType", "PC_COMPOSITE_", nullptr};
 
@@ -348,6 +349,7 @@ static PetscErrorCode PCSetFromOptions_GDSW(PC pc, PetscOptionItems *PetscOption
   PCCompositeType       combination;
   PCGDSWFirstLevelType  firstLevel;
   PCGDSWLocalSolverType local;
+  PCGDSWLocalPrecision  precision;
   PetscReal             r;
 
   PetscFunctionBegin;
@@ -364,12 +366,15 @@ static PetscErrorCode PCSetFromOptions_GDSW(PC pc, PetscOptionItems *PetscOption
   PetscCall(CheckOptionValue(pc, "-pc_gdsw_huge_pages", OPTION_BOOL, nullptr, nullptr));
   PetscCall(CheckOptionValue(pc, "-pc_gdsw_local_solver", OPTION_ELIST, PCGDSWLocalSolverTypes, nullptr));
   PetscCall(CheckOptionValue(pc, "-pc_gdsw_local_condition_max", OPTION_REAL, nullptr, ConditionRange));
+  PetscCall(CheckOptionValue(pc, "-pc_gdsw_local_precision", OPTION_ELIST, PCGDSWLocalPrecisions, nullptr));
   PetscOptionsHeadBegin(PetscOptionsObject, "GDSW two-level overlapping Schwarz options");
   /* first: the size rule's default target depends on it */
   PetscCall(PetscOptionsEnum("-pc_gdsw_local_solver", "First level's local solvers: exact factorisations, incomplete ones (ICC(0)/ILU(0)), or adaptive: incomplete where its condition estimate is at most -pc_gdsw_local_condition_max, exact elsewhere", "PCGDSWSetLocalSolverType", PCGDSWLocalSolverTypes, (PetscEnum)gd->localSolver, (PetscEnum *)&local, &flg));
   if (flg) PetscCall(PCGDSWSetLocalSolverType(pc, local));
   PetscCall(PetscOptionsReal("-pc_gdsw_local_condition_max", "Adaptive local solvers: the largest condition estimate of an incomplete factor's preconditioned subdomain matrix that keeps it", "PCGDSWSetLocalConditionMax", gd->conditionMax, &r, &flg));
   if (flg) PetscCall(PCGDSWSetLocalConditionMax(pc, r));
+  PetscCall(PetscOptionsEnum("-pc_gdsw_local_precision", "Precision the first level's Cholesky factors are kept and applied in: single where that solves to within 1e-3 of double (MATSOLVERCHOLMODSINGLE), or double", "PCGDSWSetLocalPrecision", PCGDSWLocalPrecisions, (PetscEnum)gd->localPrecision, (PetscEnum *)&precision, &flg));
+  if (flg) PetscCall(PCGDSWSetLocalPrecision(pc, precision));
   PetscCall(PetscOptionsInt("-pc_gdsw_subdomains", "Subdomains per MPI rank (METIS on the rank's node graph); -1 (PETSC_DECIDE): about -pc_gdsw_subdomain_size dofs each", "PCGDSWSetSubdomainsPerRank", gd->nsubPerRank, &n, &flg));
   if (flg) PetscCall(PCGDSWSetSubdomainsPerRank(pc, n));
   PetscCall(PetscOptionsBool("-pc_gdsw_repartition", "Subdomains from a parallel partition of the whole matrix graph (MatPartitioning, options -pc_gdsw_mat_partitioning_*) instead of METIS within each rank's rows", "PCGDSWSetRepartition", gd->repartition, &b, &flg));
@@ -733,6 +738,24 @@ static PetscErrorCode PCGDSWSetReuseCoarseBasis_GDSW(PC pc, PetscBool flg)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode PCGDSWSetLocalPrecision_GDSW(PC pc, PCGDSWLocalPrecision p)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  GDSW_CHECK_ENUM(pc, p, PC_GDSW_LOCAL_PRECISION_SINGLE, PCGDSWLocalPrecisions);
+  if (p != gd->localPrecision) pc->setupcalled = 0; /* new local factors */
+  gd->localPrecision = p;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDSWGetLocalPrecision_GDSW(PC pc, PCGDSWLocalPrecision *p)
+{
+  PetscFunctionBegin;
+  *p = ((PC_GDSW *)pc->data)->localPrecision;
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode PCGDSWSetHugePages_GDSW(PC pc, PetscBool flg)
 {
   PetscFunctionBegin;
@@ -812,6 +835,8 @@ static PetscErrorCode ComposeMethods(PC pc, PetscBool add)
   GDSW_COMPOSE(PCGDSWGetLocalSolverType);
   GDSW_COMPOSE(PCGDSWSetLocalConditionMax);
   GDSW_COMPOSE(PCGDSWGetLocalConditionMax);
+  GDSW_COMPOSE(PCGDSWSetLocalPrecision);
+  GDSW_COMPOSE(PCGDSWGetLocalPrecision);
   GDSW_COMPOSE(PCGDSWSetCoarseSpaceType);
   GDSW_COMPOSE(PCGDSWGetCoarseSpaceType);
   GDSW_COMPOSE(PCGDSWSetRGDSWWeightType);
@@ -876,7 +901,8 @@ static PetscErrorCode PCDestroy_GDSW(PC pc)
 .  -pc_gdsw_reuse_coarse_basis <false> - keep Phi when the operator's values change (see `PCGDSWSetReuseCoarseBasis()`)
 .  -pc_gdsw_huge_pages <true> - during set-up, the blocks of 2 MiB or more that it keeps (local factors, subdomain matrices) on transparent huge pages where the kernel gives them on request (see `PCGDSWSetHugePages()`)
 .  -pc_gdsw_local_solver <exact> - exact, incomplete or adaptive local solvers of the first level (see `PCGDSWSetLocalSolverType()`)
--  -pc_gdsw_local_condition_max <25> - the adaptive local solvers' bound (see `PCGDSWSetLocalConditionMax()`)
+.  -pc_gdsw_local_condition_max <25> - the adaptive local solvers' bound (see `PCGDSWSetLocalConditionMax()`)
+-  -pc_gdsw_local_precision <single> - the first level's Cholesky factors kept in single precision where that solves to within 1e-3 of double, or double (see `PCGDSWSetLocalPrecision()`)
 
    Notes:
    The subdomains are, in this order of preference, the application's (`PCGDSWSetSubdomains()`),
@@ -926,6 +952,7 @@ PETSC_EXTERN PetscErrorCode PCCreate_GDSW(PC pc)
   gd->subdomainSize    = PETSC_DECIDE;
   gd->localSolver      = PC_GDSW_LOCAL_EXACT;
   gd->conditionMax     = 25;
+  gd->localPrecision   = PC_GDSW_LOCAL_PRECISION_SINGLE;
   gd->overlap          = 1;
   gd->coarseType       = PC_GDSW_COARSE_GDSW;
   gd->combination      = PC_COMPOSITE_SYMMETRIC_MULTIPLICATIVE;
@@ -980,6 +1007,7 @@ PetscErrorCode PCGDSWRegister(void)
   GDSWRegistered = PETSC_TRUE;
   PetscCall(PCRegister(PCGDSW, PCCreate_GDSW));
   PetscCall(GDSWRegisterOrdering());
+  PetscCall(GDSWRegisterSingleFactor());
   PetscCall(PetscLogEventRegister("GDSWDecomp", PC_CLASSID, &GDSW_Decomposition));
   PetscCall(PetscLogEventRegister("GDSWInterface", PC_CLASSID, &GDSW_Interface));
   PetscCall(PetscLogEventRegister("GDSWBasis", PC_CLASSID, &GDSW_Basis));

@@ -8,6 +8,7 @@
      first_level.cxx    local solvers on Omega_i^delta and their restriction/prolongation
      threads.cxx        one thread per rank while the set-up factors
      huge_pages.cxx     the local factors on transparent huge pages
+     single_factor.cxx  the first level's Cholesky factors kept in single precision
      gdsw.cxx           the PC object: options, setup order, apply and its transpose, view, public API */
 #pragma once
 
@@ -24,10 +25,11 @@ enum ComponentKind { FACE = 0, EDGE = 1, VERTEX = 2 };
    harmonic extension. */
 enum LocalMatrix { OVERLAPPING = 0, INTERIOR = 1 };
 
-/* How a local matrix was factored, for -pc_view: LU_NOT_SPD is LU where Cholesky was asked for
+/* How a local matrix was factored, for -pc_view: CHOLESKY_SINGLE is a Cholesky factor kept in
+   single precision (MATSOLVERCHOLMODSINGLE); LU_NOT_SPD is LU where Cholesky was asked for
    but the matrix is not symmetric positive definite; INCOMPLETE is ICC or ILU; OTHER is any other
    solver the options chose. */
-enum Factorisation { UNFACTORED = 0, CHOLESKY, LU, LU_NOT_SPD, INCOMPLETE, OTHER };
+enum Factorisation { UNFACTORED = 0, CHOLESKY, CHOLESKY_SINGLE, LU, LU_NOT_SPD, INCOMPLETE, OTHER };
 
 /* A group of coarse basis functions, seen from one subdomain. For GDSW it is one interface
    component; for RGDSW one coarse node whose support is every component it is an ancestor of. */
@@ -79,6 +81,7 @@ typedef struct {
   PetscInt              subdomainSize;    /* -pc_gdsw_subdomain_size: target dofs per subdomain of the rule, or PETSC_DECIDE: by the local solver */
   PCGDSWLocalSolverType localSolver;      /* -pc_gdsw_local_solver */
   PetscReal             conditionMax;     /* -pc_gdsw_local_condition_max: the adaptive first level's bound */
+  PCGDSWLocalPrecision  localPrecision;   /* -pc_gdsw_local_precision: of the first level's Cholesky factors */
   PetscInt              overlap;          /* -pc_gdsw_overlap */
   PCGDSWCoarseSpaceType coarseType;
   PCCompositeType       combination;    /* additive, multiplicative or symmetric multiplicative */
@@ -152,6 +155,14 @@ PETSC_INTERN PetscErrorCode GDSWSetUpLocalSolver(PC, KSP, gdsw::Subdomain &, gds
 PETSC_INTERN PetscErrorCode GDSWViewLocalSolvers(PC, PetscViewer);
 PETSC_INTERN PetscErrorCode GDSWComposeRowRanks(PC, gdsw::Subdomain &, gdsw::LocalMatrix, Mat);
 PETSC_INTERN PetscErrorCode GDSWRegisterOrdering(void);
+/* MATSOLVERCHOLMODSINGLE hands PETSc's arrays to CHOLMOD's int, double interface */
+#if defined(PETSC_USE_64BIT_INDICES) || defined(PETSC_USE_COMPLEX) || !defined(PETSC_USE_REAL_DOUBLE)
+  #define GDSW_HAVE_SINGLE_FACTOR 0
+#else
+  #define GDSW_HAVE_SINGLE_FACTOR 1
+#endif
+PETSC_INTERN PetscErrorCode GDSWRegisterSingleFactor(void);
+PETSC_INTERN PetscErrorCode GDSWFactorIsSingle(Mat, PetscBool *);
 PETSC_INTERN PetscErrorCode GDSWSerialRegionsBegin(PetscInt *);
 PETSC_INTERN PetscErrorCode GDSWSerialRegionsEnd(PetscInt);
 PETSC_INTERN PetscErrorCode GDSWHugePagesBegin(PC, PetscBool, PetscBool *, size_t *);
