@@ -21,7 +21,7 @@ BASE = (f"mpiexec -n 2 {APP} -options_file scenes/fsi_tube1_arterial.opts -optio
         f"-options_file scenes/fsi_inexact_newton.opts -mesh {MESH} -dt 5e-4 -t_final 5e-4 -snes_monitor -ksp_converged_reason")
 VARIANTS = {
     "GDSW, 64 subdomains per rank (the scene's)": "-structure_subdomains 64",
-    "GDSW, 64 per rank, double-precision factors": "-structure_subdomains 64 -fieldsplit_structure_pc_gdsw_local_precision double",
+    "GDSW, 64 per rank, double-precision factors, GMRES (the scene before)": "-structure_subdomains 64 -fieldsplit_structure_pc_gdsw_local_precision double -ksp_type gmres",
     "RGDSW, 64 per rank": "-structure_subdomains 64 -fieldsplit_structure_pc_gdsw_coarse_space rgdsw",
     "GDSW, 32 per rank": "-structure_subdomains 32",
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
 """The experiment of Heinlein, Klawonn, Rheinbach (2016), Table 2 and Fig. 2, in kind: the
-coupled pressure wave in tube #1 solved by Newton + GMRES with FaCSI (scenes/fsi_facsi.opts),
+coupled pressure wave in tube #1 solved by Newton + FGMRES with FaCSI (scenes/fsi_facsi.opts),
 for the three walls x four time steps, with only the structure split's preconditioner changed:
   (a) ASM       algebraic one-level Schwarz (PCASM, overlap 2, as many blocks as subdomains;
                 the role IFPACK plays in the paper)

@@ -512,7 +512,7 @@ def view_and_log():
     out = run([ELASTICITY, "-n", 4, "-boxes", 2, "-help"])
     for s in ("-pc_gdsw_subdomains <now -1", "-pc_gdsw_subdomain_size <now", "-pc_gdsw_overlap <now 1", "-pc_gdsw_coarse_space <now gdsw", "-pc_gdsw_rgdsw_weights <now distance", "-pc_gdsw_rotations: <TRUE", "-pc_gdsw_repartition: <FALSE",
               "-pc_gdsw_combination <now symmetric_multiplicative", "-pc_gdsw_first_level_type <now additive", "-pc_gdsw_reuse_coarse_basis: <FALSE", "-pc_gdsw_huge_pages: <TRUE",
-              "-pc_gdsw_local_solver <now exact", "-pc_gdsw_local_condition_max <25.", "-pc_gdsw_local_precision <now single", "-pc_gdsw_subdomain_size <now 12000",
+              "-pc_gdsw_local_solver <now exact", "-pc_gdsw_local_condition_max <25.", "-pc_gdsw_local_precision <now double", "-pc_gdsw_subdomain_size <now 12000",
               "-pc_gdsw_sub_pc_type", "-pc_gdsw_extension_pc_type", "-pc_gdsw_coarse_pc_type"):
         assert s in out, f"missing in -help: {s!r}"
 
@@ -747,32 +747,45 @@ def huge_pages():
 
 @case
 def local_precision():
-    """-pc_gdsw_local_precision single (the default) keeps the first level's Cholesky factors in
-    single precision (MATSOLVERCHOLMODSINGLE: CHOLMOD's double factor rounded, its double values
-    freed). Q1 elasticity, 4 subdomains on 2 ranks: -ksp_view counts 4 factors kept in single
-    precision, the first one's solve deviates from the double one by less than 1e-5 (unit roundoff
-    6e-8 times a modest condition number), and CG takes the iterations of CHOLMOD's double factor
-    (-pc_gdsw_local_precision double) within one. At nu = 0.4999 (134 iterations with double
-    factors) at most 5 % more. -pc_gdsw_sub_mat_cholmod_single_deviation_max 0 keeps every factor
-    in double precision, says so under -info, and takes exactly the double iterations; a negative,
-    malformed or NaN limit stops with a sentence naming the option. As PCCHOLESKY's factor in any program, CG
-    preconditioned by it converges to 1e-10 in at most 3 iterations (an exact solve takes 1, a
-    single-precision one gains about 7 digits per iteration)."""
+    """-pc_gdsw_local_precision single keeps the first level's Cholesky factors in single precision
+    (MATSOLVERCHOLMODSINGLE: CHOLMOD's double factor rounded, its double values freed); the default
+    is double. Q1 elasticity, 4 subdomains on 2 ranks: -ksp_view counts 4 factors kept in single
+    precision (none by default), the first one's solve deviates from the double one by less than
+    1e-5 (unit roundoff 6e-8 times a modest condition number), and CG takes the iterations of
+    CHOLMOD's double factor within one. At nu = 0.4999 (134 iterations with double factors) at
+    most 5 % more. What the option costs: GMRES to rtol 1e-12 stalls above a true relative
+    residual of 1e-7 with single factors (7e-6 measured) and reaches 1e-8 with double ones (5e-10),
+    while FGMRES reaches 1e-8 with both (1e-12). -pc_gdsw_sub_mat_cholmod_single_deviation_max
+    0 keeps every factor in double precision, says so under -info, and takes exactly the double
+    iterations; a negative, malformed or NaN limit stops with a sentence naming the option. As
+    PCCHOLESKY's factor in any program, CG preconditioned by it converges to 1e-10 in at most 3
+    iterations (an exact solve takes 1, a single-precision one gains about 7 digits each)."""
     base = ["-n", 24, "-pc_gdsw_subdomains", 2, "-ksp_rtol", 1e-8, "-ksp_norm_type", "unpreconditioned"]
-    out = run([ELASTICITY] + base + ["-ksp_view"], 2)
+    single = ["-pc_gdsw_local_precision", "single"]
+    out = run([ELASTICITY] + base + single + ["-ksp_view"], 2)
     assert "local factorisations of the overlapping matrices: 4 Cholesky kept in single precision" in out, "-ksp_view"
     between(float(re.search(r"kept in single precision \(its single-precision solve deviated by (\S+);", out).group(1)), 0, 1e-5, "deviation")
-    single = int(re.search(r"^dofs .* iterations (\d+)", out, re.M).group(1))
-    double = elasticity(*base, "-pc_gdsw_local_precision", "double", np=2)["iterations"]
-    between(single, double - 1, double + 1, "iterations with single-precision factors")
-    kept = run([ELASTICITY] + base + ["-pc_gdsw_sub_mat_cholmod_single_deviation_max", 0, "-ksp_view", "-info", ":mat"], 2)
+    its = int(re.search(r"^dofs .* iterations (\d+)", out, re.M).group(1))
+    default = run([ELASTICITY] + base + ["-ksp_view"], 2)
+    assert "local factorisations of the overlapping matrices: 4 Cholesky\n" in default, "the default is double precision"
+    double = int(re.search(r"^dofs .* iterations (\d+)", default, re.M).group(1))
+    between(its, double - 1, double + 1, "iterations with single-precision factors")
+    kept = run([ELASTICITY] + base + single + ["-pc_gdsw_sub_mat_cholmod_single_deviation_max", 0, "-ksp_view", "-info", ":mat"], 2)
     assert kept.count("the factor stays in double precision") == 4 and "overlapping matrices: 4 Cholesky\n" in kept, "limit 0"
     assert int(re.search(r"^dofs .* iterations (\d+)", kept, re.M).group(1)) == double
     near = ["-n", 16, "-nu", 0.4999, "-ksp_rtol", 1e-8, "-ksp_norm_type", "unpreconditioned"]
     its = [elasticity(*near, "-pc_gdsw_local_precision", p, np=2)["iterations"] for p in ("single", "double")]
     between(its[0], its[1], 1.05 * its[1], "iterations at nu = 0.4999, single against double")
+    for ksp, reached in (("gmres", {"single": False, "double": True}), ("fgmres", {"single": True, "double": True})):
+        for p, ok in reached.items():
+            out = run([ELASTICITY, "-n", 24, "-ksp_type", ksp, "-ksp_rtol", 1e-12, "-ksp_max_it", 300, "-ksp_gmres_restart", 300,
+                       "-pc_gdsw_local_precision", p, "-ksp_monitor_true_residual"], 2)
+            last = re.findall(r"true resid norm \S+ \|\|r\(i\)\|\|/\|\|b\|\| (\S+)", out)[-1]
+            assert (float(last) < 1e-8) == ok, f"{ksp} with {p}-precision factors: true relative residual {last}"
+            if not ok:
+                assert float(last) > 1e-7, f"{ksp} with {p}-precision factors: {last}"
     for value in (-1, "abc", "nan"):
-        bad = run([ELASTICITY, "-n", 8, "-pc_gdsw_sub_mat_cholmod_single_deviation_max", value], 2, fail=True)
+        bad = run([ELASTICITY, "-n", 8] + single + ["-pc_gdsw_sub_mat_cholmod_single_deviation_max", value], 2, fail=True)
         assert f"cholmod_single: -pc_gdsw_sub_mat_cholmod_single_deviation_max {value} is out of range: give a number >= 0" in bad, value
     direct = run([ELASTICITY, "-n", 16, "-pc_type", "cholesky", "-pc_factor_mat_solver_type", "cholmod_single", "-ksp_rtol", 1e-10, "-ksp_view"])
     assert "package used to perform factorization: cholmod_single" in direct and "kept in single precision" in direct

@@ -49,8 +49,8 @@ PETSC_EXTERN const char *const PCGDSWLocalSolverTypes[];
 
 /* The precision the first level's Cholesky factors are kept and applied in. */
 typedef enum {
-  PC_GDSW_LOCAL_PRECISION_DOUBLE, /* CHOLMOD's factor as it is */
-  PC_GDSW_LOCAL_PRECISION_SINGLE  /* MATSOLVERCHOLMODSINGLE: single precision where it solves to within 1e-3 of double */
+  PC_GDSW_LOCAL_PRECISION_DOUBLE, /* CHOLMOD's factor as it is (the default) */
+  PC_GDSW_LOCAL_PRECISION_SINGLE  /* MATSOLVERCHOLMODSINGLE: single precision where it solves to within 1e-3 of double; for CG, FGMRES */
 } PCGDSWLocalPrecision;
 PETSC_EXTERN const char *const PCGDSWLocalPrecisions[];
 

@@ -373,7 +373,7 @@ static PetscErrorCode PCSetFromOptions_GDSW(PC pc, PetscOptionItems *PetscOption
   if (flg) PetscCall(PCGDSWSetLocalSolverType(pc, local));
   PetscCall(PetscOptionsReal("-pc_gdsw_local_condition_max", "Adaptive local solvers: the largest condition estimate of an incomplete factor's preconditioned subdomain matrix that keeps it", "PCGDSWSetLocalConditionMax", gd->conditionMax, &r, &flg));
   if (flg) PetscCall(PCGDSWSetLocalConditionMax(pc, r));
-  PetscCall(PetscOptionsEnum("-pc_gdsw_local_precision", "Precision the first level's Cholesky factors are kept and applied in: single where that solves to within 1e-3 of double (MATSOLVERCHOLMODSINGLE), or double", "PCGDSWSetLocalPrecision", PCGDSWLocalPrecisions, (PetscEnum)gd->localPrecision, (PetscEnum *)&precision, &flg));
+  PetscCall(PetscOptionsEnum("-pc_gdsw_local_precision", "Precision the first level's Cholesky factors are kept and applied in: double, or single where that solves to within 1e-3 of double (MATSOLVERCHOLMODSINGLE; for CG and FGMRES: GMRES then stalls, near a relative residual of 1e-5 on elasticity)", "PCGDSWSetLocalPrecision", PCGDSWLocalPrecisions, (PetscEnum)gd->localPrecision, (PetscEnum *)&precision, &flg));
   if (flg) PetscCall(PCGDSWSetLocalPrecision(pc, precision));
   PetscCall(PetscOptionsInt("-pc_gdsw_subdomains", "Subdomains per MPI rank (METIS on the rank's node graph); -1 (PETSC_DECIDE): about -pc_gdsw_subdomain_size dofs each", "PCGDSWSetSubdomainsPerRank", gd->nsubPerRank, &n, &flg));
   if (flg) PetscCall(PCGDSWSetSubdomainsPerRank(pc, n));
@@ -902,7 +902,7 @@ static PetscErrorCode PCDestroy_GDSW(PC pc)
 .  -pc_gdsw_huge_pages <true> - during set-up, the blocks of 2 MiB or more that it keeps (local factors, subdomain matrices) on transparent huge pages where the kernel gives them on request (see `PCGDSWSetHugePages()`)
 .  -pc_gdsw_local_solver <exact> - exact, incomplete or adaptive local solvers of the first level (see `PCGDSWSetLocalSolverType()`)
 .  -pc_gdsw_local_condition_max <25> - the adaptive local solvers' bound (see `PCGDSWSetLocalConditionMax()`)
--  -pc_gdsw_local_precision <single> - the first level's Cholesky factors kept in single precision where that solves to within 1e-3 of double, or double (see `PCGDSWSetLocalPrecision()`)
+-  -pc_gdsw_local_precision <double> - single: the first level's Cholesky factors kept in single precision where that solves to within 1e-3 of double, for CG and FGMRES (see `PCGDSWSetLocalPrecision()`)
 
    Notes:
    The subdomains are, in this order of preference, the application's (`PCGDSWSetSubdomains()`),
@@ -952,7 +952,7 @@ PETSC_EXTERN PetscErrorCode PCCreate_GDSW(PC pc)
   gd->subdomainSize    = PETSC_DECIDE;
   gd->localSolver      = PC_GDSW_LOCAL_EXACT;
   gd->conditionMax     = 25;
-  gd->localPrecision   = PC_GDSW_LOCAL_PRECISION_SINGLE;
+  gd->localPrecision   = PC_GDSW_LOCAL_PRECISION_DOUBLE;
   gd->overlap          = 1;
   gd->coarseType       = PC_GDSW_COARSE_GDSW;
   gd->combination      = PC_COMPOSITE_SYMMETRIC_MULTIPLICATIVE;
