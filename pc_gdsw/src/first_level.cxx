@@ -36,6 +36,12 @@ static PetscErrorCode MayBeSPD(PC pc, Mat A, PetscBool *spd)
   PetscFunctionReturn(0);
 }
 
+/* CHOLMOD's factor, in double or single precision */
+static bool IsCholmod(MatSolverType solver)
+{
+  return solver && (!strcmp(solver, MATSOLVERCHOLMOD) || !strcmp(solver, MATSOLVERCHOLMODSINGLE));
+}
+
 /* LU with the solver asked for, unless it only does Cholesky (CHOLMOD): then UMFPACK. */
 static PetscErrorCode SwitchToLU(KSP ksp)
 {
@@ -48,7 +54,7 @@ static PetscErrorCode SwitchToLU(KSP ksp)
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(KSPGetOperators(ksp, &A, nullptr));
   PetscCall(PCFactorGetMatSolverType(pc, &asked));
-  if (asked && strcmp(asked, MATSOLVERCHOLMOD) && strcmp(asked, MATSOLVERCHOLMODSINGLE)) PetscCall(PetscStrncpy(solver, asked, sizeof(solver)));
+  if (asked && !IsCholmod(asked)) PetscCall(PetscStrncpy(solver, asked, sizeof(solver)));
 #if defined(PETSC_HAVE_SUITESPARSE)
   else PetscCall(PetscStrncpy(solver, MATSOLVERUMFPACK, sizeof(solver)));
 #endif
@@ -83,7 +89,7 @@ static PetscErrorCode TryCholesky(PC pc, KSP ksp, Subdomain &s, LocalMatrix whic
   PetscFunctionBegin;
   PetscCall(KSPGetPC(ksp, &lpc));
   PetscCall(PCFactorGetMatSolverType(lpc, &solver));
-  if (solver && (!strcmp(solver, MATSOLVERCHOLMOD) || !strcmp(solver, MATSOLVERCHOLMODSINGLE))) cholmod = PETSC_TRUE;
+  cholmod = (PetscBool)IsCholmod(solver);
   if (cholmod) {
     PetscCall(PCGetOptionsPrefix(lpc, &prefix));
     PetscCall(PetscSNPrintf(print, sizeof(print), "-%smat_cholmod_print", prefix ? prefix : ""));
@@ -231,12 +237,12 @@ PetscErrorCode GDSWViewLocalSolvers(PC pc, PetscViewer viewer)
 {
   PC_GDSW                 *gd = (PC_GDSW *)pc->data;
   static const char *const names[] = {nullptr, "Cholesky", "Cholesky kept in single precision", "LU", "LU instead of Cholesky (not symmetric positive definite)", "incomplete (ICC/ILU)", "other solvers"};
-  PetscInt                 local[2][7] = {{0}}, count[2][7];
+  PetscInt                 local[2][gdsw::OTHER + 1] = {{0}}, count[2][gdsw::OTHER + 1];
 
   PetscFunctionBegin;
   for (const auto &s : *gd->sub)
     for (int m = 0; m < 2; m++) local[m][s.factorisation[m]]++;
-  PetscCallMPI(MPIU_Allreduce(local, count, 14, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)pc)));
+  PetscCallMPI(MPIU_Allreduce(local, count, 2 * (gdsw::OTHER + 1), MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)pc)));
   for (int m = 0; m < 2; m++) {
     std::string line;
     for (int k = gdsw::CHOLESKY; k <= gdsw::OTHER; k++)

@@ -203,25 +203,15 @@ PetscErrorCode MatCholeskyFactorNumeric_CholmodSingle(Mat F, Mat A, const MatFac
     PetscFunctionReturn(0);
   }
   F->factorerrortype = MAT_FACTOR_NOERROR;
-  size_t maxBelow = 0;
-  for (size_t k = 0; k < f->L->nsuper; k++) {
-    const int *super = (const int *)f->L->super, *pi = (const int *)f->L->pi;
-    maxBelow = std::max(maxBelow, (size_t)(pi[k + 1] - pi[k] - (super[k + 1] - super[k])));
-  }
-  f->nnz  = (size_t)((const int *)f->L->px)[f->L->nsuper];
-  f->fill = (double)f->nnz / triangle;
-  f->xd.resize(f->L->n);
-  f->wd.resize(maxBelow + 1);
-  f->xf.resize(f->L->n);
-  f->wf.resize(maxBelow + 1);
+  f->fill            = (double)f->nnz / triangle;
   f->Lf = (float *)SuiteSparse_malloc(f->nnz, sizeof(float));
   PetscCheck(f->Lf, PETSC_COMM_SELF, PETSC_ERR_MEM, "cholmod_single: out of memory for a factor of %zu entries", f->nnz);
   const double *Lx = (const double *)f->L->x;
   for (size_t k = 0; k < f->nnz; k++) f->Lf[k] = (float)Lx[k];
   f->deviation = Deviation(f);
   f->single    = f->deviation <= f->deviationMax;
-  PetscCall(PetscInfo(F, "cholmod_single: %zu entries; the single-precision solve deviates by %g from the double one\n", f->nnz, f->deviation));
   if (f->single) {
+    PetscCall(PetscInfo(F, "cholmod_single: %zu entries; the single-precision solve deviates by %g from the double one\n", f->nnz, f->deviation));
     /* the double values go; the pattern stays for the next factorisation */
     PetscCheck(cholmod_change_factor(CHOLMOD_PATTERN, 1, 1, 1, 1, f->L, &f->c), PETSC_COMM_SELF, PETSC_ERR_LIB, "cholmod_single: CHOLMOD could not drop the double factor (status %d)", f->c.status);
   } else {
@@ -273,6 +263,17 @@ PetscErrorCode MatCholeskyFactorSymbolic_CholmodSingle(Mat F, Mat A, IS perm, co
   if (perm) PetscCall(ISRestoreIndices(perm, &p));
   PetscCall(Unwrap(A, &S, nullptr));
   PetscCheck(f->L, PETSC_COMM_SELF, PETSC_ERR_LIB, "cholmod_single: CHOLMOD's analysis failed with status %d", f->c.status);
+  /* the supernodes' sizes fix the factor's entries and the solves' work vectors */
+  size_t maxBelow = 0;
+  for (size_t k = 0; k < f->L->nsuper; k++) {
+    const int *super = (const int *)f->L->super, *pi = (const int *)f->L->pi;
+    maxBelow = std::max(maxBelow, (size_t)(pi[k + 1] - pi[k] - (super[k + 1] - super[k])));
+  }
+  f->nnz = (size_t)((const int *)f->L->px)[f->L->nsuper];
+  f->xd.resize(f->L->n);
+  f->wd.resize(maxBelow + 1);
+  f->xf.resize(f->L->n);
+  f->wf.resize(maxBelow + 1);
   F->ops->choleskyfactornumeric = MatCholeskyFactorNumeric_CholmodSingle;
   PetscFunctionReturn(0);
 }
@@ -285,7 +286,7 @@ PetscErrorCode MatView_CholmodSingle(Mat F, PetscViewer viewer)
 
   PetscFunctionBegin;
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
-  if (!ascii || !f->nnz) PetscFunctionReturn(0);
+  if (!ascii || !(f->Lf || (f->L && f->L->xtype != CHOLMOD_PATTERN))) PetscFunctionReturn(0); /* not factored */
   PetscCall(PetscViewerGetFormat(viewer, &format));
   if (format != PETSC_VIEWER_ASCII_INFO) PetscFunctionReturn(0);
   char deviation[32];
