@@ -287,6 +287,32 @@ def reuse_new_values():
 
 
 @case
+def coarse_operator_kept_basis():
+    """A_0 is Phi^T A Phi (against MatTransposeMatMult(Phi, A Phi), relative difference < 1e-12)
+    where the interior rows of A Phi do not vanish: a kept basis with new values (the
+    checkerboard's coefficient jumps to 1e3 and Phi stays; its second set-up), and an inexact
+    extension (CG with Jacobi to 1e-2 per interior solve); on 1 and 2 ranks, additive and
+    balanced. The balanced combination solves the coarse space exactly, M A Phi c = Phi c (relative
+    difference < 1e-10), which needs W = A Phi with its interior rows. Without the interior rows'
+    term the kept basis's A_0 is 5e-2 off."""
+    base = ["-n", 12, "-boxes", 3, "-jump_boxes", 2]
+    kept = base + ["-resolve_jump", 1000, "-pc_gdsw_reuse_coarse_basis"]
+    inexact = base + ["-pc_gdsw_extension_ksp_type", "cg", "-pc_gdsw_extension_pc_type", "jacobi", "-pc_gdsw_extension_ksp_rtol", 1e-2]
+    for np in (1, 2):
+        for comb in ("additive", "symmetric_multiplicative"):
+            for opts, setups in ((kept, 2), (inexact, 1)):
+                out = run([ELASTICITY, "-check_coarse", "-pc_gdsw_combination", comb] + [str(o) for o in opts], np)
+                diffs = [float(d) for d in re.findall(r"relative difference to Phi\^T A Phi (\S+);", out)]
+                assert len(diffs) == setups, (opts, out[-2000:])
+                for d in diffs:
+                    between(d, 0, 1e-12, "|A0 - Phi^T A Phi| / |Phi^T A Phi|")
+                exact = [float(d) for d in re.findall(r"\|M A Phi c - Phi c\| / \|Phi c\| (\S+)", out)]
+                assert len(exact) == (setups if comb != "additive" else 0), out[-2000:]
+                for d in exact:
+                    between(d, 0, 1e-10, "|M A Phi c - Phi c| / |Phi c|")
+
+
+@case
 def reuse_new_dirichlet_rows():
     """MatZeroRowsColumns() on more rows keeps the pattern, so PETSc hands the PC the same-pattern
     flag; the PC sees that its Dirichlet rows changed and rebuilds: -ksp_view counts the Dirichlet

@@ -14,7 +14,7 @@ static const char help[] = "Q1 linear elasticity on the unit cube (or square: pl
                            "  -floating          no Dirichlet condition (the null space is attached to the operator)\n"
                            "  -clamp_both        clamp x = 1 too\n"
                            "  -check_phi         report how well the coarse basis reproduces the rigid-body modes\n"
-                           "  -check_coarse      compare the coarse operator with Phi^T (A Phi) and report the coarse solver (AIJ only)\n"
+                           "  -check_coarse      compare the coarse operator with Phi^T (A Phi) and report the coarse solver (AIJ only; after each set-up)\n"
                            "  -report_subdomains report the dofs of all nonoverlapping and of all overlapping subdomains, and how many of the former are connected\n"
                            "  -resolve_jump <0>  then reassemble with this -jump (same pattern) and solve again\n"
                            "  -resolve_clamp_both then reassemble with x = 1 clamped too (more Dirichlet rows, same pattern) and solve again\n"
@@ -213,8 +213,8 @@ static PetscErrorCode CheckPhi(PC pc, MatNullSpace rigid)
   PetscFunctionReturn(0);
 }
 
-/* The coarse operator against an independent product Phi^T (A Phi), and the coarse solver as the
-   options made it. */
+/* The coarse operator against an independent product Phi^T (A Phi), the coarse solver as the
+   options made it, and for the balanced combination M A Phi = Phi. */
 static PetscErrorCode CheckCoarse(PC pc, Mat A)
 {
   Mat         Phi, A0, AP, PtAP, K;
@@ -225,6 +225,7 @@ static PetscErrorCode CheckCoarse(PC pc, Mat A)
   const char *prefix;
   PetscInt    m, n;
   PetscReal   diff, norm;
+  PCCompositeType comb;
 
   PetscFunctionBegin;
   PetscCall(PCGDSWGetCoarseBasis(pc, &Phi));
@@ -245,6 +246,26 @@ static PetscErrorCode CheckCoarse(PC pc, Mat A)
                         K == A0 ? "A0" : "other"));
   PetscCall(MatDestroy(&AP));
   PetscCall(MatDestroy(&PtAP));
+  PetscCall(PCGDSWGetCombinationType(pc, &comb));
+  if (comb == PC_COMPOSITE_SYMMETRIC_MULTIPLICATIVE) { /* M A v = v for v = Phi c: the coarse space is solved exactly */
+    Vec c, v, Av, z;
+    PetscReal nv;
+    PetscCall(MatCreateVecs(Phi, &c, &v));
+    PetscCall(VecDuplicate(v, &Av));
+    PetscCall(VecDuplicate(v, &z));
+    PetscCall(VecSetRandom(c, nullptr));
+    PetscCall(MatMult(Phi, c, v));
+    PetscCall(MatMult(A, v, Av));
+    PetscCall(PCApply(pc, Av, z));
+    PetscCall(VecAXPY(z, -1.0, v));
+    PetscCall(VecNorm(z, NORM_2, &diff));
+    PetscCall(VecNorm(v, NORM_2, &nv));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "balanced combination: |M A Phi c - Phi c| / |Phi c| %.3e\n", (double)(diff / nv)));
+    PetscCall(VecDestroy(&c));
+    PetscCall(VecDestroy(&v));
+    PetscCall(VecDestroy(&Av));
+    PetscCall(VecDestroy(&z));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -463,6 +484,7 @@ int main(int argc, char **argv)
     PetscCall(KSPSolve(ksp, b, x));
     PetscCall(PetscTime(&t2));
     PetscCall(Report(ksp, A, t1 - t0, t2 - t1));
+    if (checkCoarse) PetscCall(CheckCoarse(pc, A));
   }
 
   for (IS &is : boxes) PetscCall(ISDestroy(&is));

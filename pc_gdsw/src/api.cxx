@@ -760,7 +760,8 @@ PetscErrorCode PCGDSWGetLocalPrecision(PC pc, PCGDSWLocalPrecision *precision)
 .  -pc_gdsw_reuse_coarse_basis <true,false> - sets the flag
 
    Note:
-   A kept basis saves the interior factorisations of the harmonic extension at the price of iterations when the operator changes much.
+   A kept basis saves the interior factorisations and solves of the harmonic extension at the price of iterations when the operator changes much.
+   A_0 is still assembled from the subdomains' own matrices, with one dense product Phi_I^T (A Phi)_I per subdomain for the interior rows of A Phi, which no longer vanish.
 
    Level: advanced
 

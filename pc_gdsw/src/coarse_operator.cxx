@@ -1,24 +1,29 @@
 // SPDX-License-Identifier: BSD-2-Clause
-/* The coarse operator A_0 = Phi^T A Phi.
-   When Phi was just extended with exact interior solves, (A Phi) vanishes on interior rows,
-   so A_0 = sum_i Phi_Gamma_i^T (A_GammaI Phi_I + A^_GammaGamma Phi_Gamma)_i: a dense block per
-   subdomain from its own matrices, each Gamma-Gamma coupling counted once (by the subdomain of
-   smallest id containing both nodes). No parallel triple product is needed. Otherwise (a kept
-   basis with new values, or an inexact extension) A_0 comes from MatPtAP.
-   The balanced combination also needs A Phi: the sum of the same blocks C_i = (A_GammaI Phi_I +
-   A^_GammaGamma Phi_Gamma)_i on the interface rows, or MatMatMult where A_0 needs MatPtAP. */
+/* The coarse operator A_0 = Phi^T A Phi, assembled from dense blocks per subdomain and its own
+   matrices: no parallel triple product. A row of A Phi at an interior dof of Omega~_i couples
+   only dofs of Omega~_i, so
+     A_0 = sum_i Phi_Gamma_i^T (A_GammaI Phi_I + A^_GammaGamma Phi_Gamma)_i + Phi_I_i^T (A_II Phi_I + A_IGamma Phi_Gamma)_i,
+   each Gamma-Gamma coupling counted once (by the subdomain of smallest id containing both nodes).
+   Where Phi was just extended with exact interior solves, the interior rows of A Phi vanish and
+   their term is skipped; a kept basis with new values (-pc_gdsw_reuse_coarse_basis) or an inexact
+   extension pays one dense product Phi_I^T (A Phi)_I per subdomain, where MatPtAP cost more than
+   the extension it saved.
+   The balanced combination also needs W = A Phi: the same blocks, summed on the interface rows,
+   and on the interior rows where they do not vanish. */
 #include "gdswimpl.h"
 #include <petscblaslapack.h>
 #include <algorithm>
 
 using gdsw::Subdomain;
 
-/* Columns of Phi a subdomain touches, in the order of its dense blocks. */
-static std::vector<PetscInt> Columns(const Subdomain &s)
+/* Columns of Phi a subdomain touches, in the order of its dense blocks, numbered as in Phi: with
+   columns dropped (DropZeroColumns), through kept (the full number's place in Phi, or -1, which
+   MatSetValues() ignores; the dropped columns of a block are zero). */
+static std::vector<PetscInt> Columns(const Subdomain &s, const std::vector<PetscInt> &kept)
 {
   std::vector<PetscInt> cols;
   for (const auto &g : s.groups)
-    for (PetscInt j = 0; j < g.ncols; j++) cols.push_back(g.col0 + j);
+    for (PetscInt j = 0; j < g.ncols; j++) cols.push_back(kept.empty() ? g.col0 + j : kept[g.col0 + j]);
   return cols;
 }
 
@@ -35,8 +40,9 @@ static PetscInt FirstCommon(const std::vector<PetscInt> &a, const std::vector<Pe
 
 /* block = Phi_Gamma^T C, ncols x ncols, column-major, with C = A_GammaI Phi_I + A^_GammaGamma Phi_Gamma
    (nG x ncols, row-major), the subdomain's part of A Phi (returned; kept by the caller only when W
-   is assembled) */
-static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, std::vector<PetscScalar> &block, std::vector<PetscScalar> &C)
+   is assembled); with interior, plus Phi_I^T R, R = A_II Phi_I + A_IGamma Phi_Gamma (nI x ncols,
+   row-major, returned likewise). */
+static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, bool interior, std::vector<PetscScalar> &block, std::vector<PetscScalar> &C, std::vector<PetscScalar> &R)
 {
   PC_GDSW          *gd = (PC_GDSW *)pc->data;
   const PetscInt    bs = gd->bs, nloc = (PetscInt)s.nodes.size() * bs;
@@ -87,6 +93,23 @@ static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, std:
     }
   }
   PetscCall(PetscLogFlops(2.0 * ptr[nG] * ncols));
+  R.clear(); /* every coupling of an interior row lies in Omega~_i */
+  if (interior && nI) {
+    R.assign(nI * ncols, 0.0);
+    PetscLogDouble flops = 0;
+    for (PetscInt r = 0; r < nI; r++) {
+      PetscScalar *rr = &R[r * ncols];
+      for (PetscInt k = ia[I[r]]; k < ia[I[r] + 1]; k++) {
+        const PetscInt w = where[ja[k]];
+        if (w == -1) continue; /* a Dirichlet dof: Phi vanishes there */
+        const PetscScalar *x = &X[(w >= 0 ? w : nI - w - 2) * ncols];
+        const PetscScalar  a = va[k];
+        for (PetscInt j = 0; j < ncols; j++) rr[j] += a * x[j];
+        flops += 2.0 * ncols;
+      }
+    }
+    PetscCall(PetscLogFlops(flops));
+  }
   PetscCall(MatSeqAIJRestoreArrayRead(s.Anon, &va));
   PetscCall(MatRestoreRowIJ(s.Anon, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
   block.assign(ncols * ncols, 0.0);
@@ -98,6 +121,11 @@ static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, std:
   /* block = Phi_Gamma^T C; C row-major is C^T column-major (ncols x nG) */
   if (nG) PetscCallBLAS("BLASgemm", BLASgemm_("T", "T", &m, &n, &kk, &one, phiG, &kk, C.data(), &n, &zero, block.data(), &m));
   PetscCall(PetscLogFlops(2.0 * nG * ncols * ncols));
+  if (!R.empty()) { /* block += Phi_I^T R */
+    PetscCall(PetscBLASIntCast(nI, &kk));
+    PetscCallBLAS("BLASgemm", BLASgemm_("T", "T", &m, &n, &kk, &one, phiI, &kk, R.data(), &n, &one, block.data(), &m));
+    PetscCall(PetscLogFlops(2.0 * nI * ncols * ncols));
+  }
   PetscCall(MatDenseRestoreArrayRead(s.PhiG, &phiG));
   if (nI) PetscCall(MatDenseRestoreArrayRead(s.PhiI, &phiI));
   PetscCall(ISRestoreIndices(s.isI, &I));
@@ -106,45 +134,47 @@ static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, std:
 }
 
 /* Every subdomain's dense block, computed once for both the preallocation and the values; with
-   C, also each subdomain's part of A Phi (otherwise each is dropped after its block). */
-static PetscErrorCode LocalBlocks(PC pc, std::vector<std::vector<PetscScalar>> &blocks, std::vector<std::vector<PetscScalar>> *C)
+   C and R, also each subdomain's part of A Phi (otherwise each is dropped after its block); with
+   interior, the interior rows' term too. */
+static PetscErrorCode LocalBlocks(PC pc, bool interior, std::vector<std::vector<PetscScalar>> &blocks, std::vector<std::vector<PetscScalar>> *C, std::vector<std::vector<PetscScalar>> *R)
 {
   PC_GDSW                 *gd = (PC_GDSW *)pc->data;
-  std::vector<PetscScalar> scratch;
+  std::vector<PetscScalar> scratchC, scratchR;
 
   PetscFunctionBegin;
   blocks.resize(gd->sub->size());
-  if (C) C->resize(gd->sub->size());
+  if (C) C->resize(gd->sub->size()), R->resize(gd->sub->size());
   for (size_t i = 0; i < gd->sub->size(); i++) {
     const Subdomain &s = (*gd->sub)[i];
     PetscInt         ncols = 0;
     for (const auto &g : s.groups) ncols += g.ncols;
-    if (ncols) PetscCall(LocalBlock(pc, s, ncols, blocks[i], C ? (*C)[i] : scratch));
+    if (ncols) PetscCall(LocalBlock(pc, s, ncols, interior, blocks[i], C ? (*C)[i] : scratchC, C ? (*R)[i] : scratchR));
   }
   PetscFunctionReturn(0);
 }
 
-/* The global rows of a subdomain's interface dofs. */
-static PetscErrorCode GammaRows(PC pc, const Subdomain &s, std::vector<PetscInt> &rows)
+/* The global rows of a subdomain's interior or interface dofs. */
+static PetscErrorCode GlobalRows(PC pc, const Subdomain &s, IS local, std::vector<PetscInt> &rows)
 {
   PC_GDSW        *gd = (PC_GDSW *)pc->data;
   const PetscInt  bs = gd->bs;
-  PetscInt        nG;
-  const PetscInt *G;
+  PetscInt        n;
+  const PetscInt *idx;
 
   PetscFunctionBegin;
-  PetscCall(ISGetLocalSize(s.isG, &nG));
-  PetscCall(ISGetIndices(s.isG, &G));
-  rows.resize(nG);
-  for (PetscInt r = 0; r < nG; r++) rows[r] = s.nodes[G[r] / bs] * bs + G[r] % bs;
-  PetscCall(ISRestoreIndices(s.isG, &G));
+  PetscCall(ISGetLocalSize(local, &n));
+  PetscCall(ISGetIndices(local, &idx));
+  rows.resize(n);
+  for (PetscInt r = 0; r < n; r++) rows[r] = s.nodes[idx[r] / bs] * bs + idx[r] % bs;
+  PetscCall(ISRestoreIndices(local, &idx));
   PetscFunctionReturn(0);
 }
 
-/* A Phi = sum_i R_Gamma_i^T C_i. A row's length is at most the sum of the column counts of the
-   subdomains that share its node, split by the columns' owner: summed at the node's owner along
-   the node star forest (assembly drops what is not used). */
-static PetscErrorCode AssembleAPhi(PC pc, const std::vector<std::vector<PetscScalar>> &C)
+/* W = A Phi = sum_i R_Gamma_i^T C_i (+ R_I_i^T R_i with interior). A row's length is at most the
+   sum of the column counts of the subdomains that share its node, split by the columns' owner:
+   summed at the node's owner along the node star forest (assembly drops what is not used). W made
+   without the interior rows is made again when they are needed. */
+static PetscErrorCode AssembleAPhi(PC pc, bool interior, const std::vector<PetscInt> &kept, const std::vector<std::vector<PetscScalar>> &C, const std::vector<std::vector<PetscScalar>> &R)
 {
   PC_GDSW           *gd = (PC_GDSW *)pc->data;
   const PetscInt     bs = gd->bs;
@@ -153,16 +183,18 @@ static PetscErrorCode AssembleAPhi(PC pc, const std::vector<std::vector<PetscSca
   PetscInt           nroots, nleaves, m, M, n, N;
 
   PetscFunctionBegin;
+  if (gd->APhi && interior && !gd->aPhiInterior) PetscCall(MatDestroy(&gd->APhi));
   if (!gd->APhi) {
     PetscCall(MatGetOwnershipRangesColumn(gd->Phi, &colRange));
     PetscCall(PetscSFGetGraph(gd->nodeSF, &nroots, &nleaves, nullptr, &owner));
     std::vector<PetscInt> leafD(nleaves, 0), leafO(nleaves, 0), rootD(nroots, 0), rootO(nroots, 0);
     for (const auto &s : *gd->sub) {
-      const std::vector<PetscInt> cols = Columns(s);
+      const std::vector<PetscInt> cols = Columns(s, kept);
       for (size_t a = 0; a < s.nodes.size(); a++) {
-        if ((*gd->sets)[s.setOf[a]].size() < 2) continue;
+        if (!interior && (*gd->sets)[s.setOf[a]].size() < 2) continue;
         const PetscInt leaf = s.leaf0 + (PetscInt)a, r = owner[leaf].rank;
-        for (PetscInt c : cols) (c >= colRange[r] && c < colRange[r + 1] ? leafD : leafO)[leaf]++;
+        for (PetscInt c : cols)
+          if (c >= 0) (c >= colRange[r] && c < colRange[r + 1] ? leafD : leafO)[leaf]++;
       }
     }
     PetscCall(PetscSFReduceBegin(gd->nodeSF, MPIU_INT, leafD.data(), rootD.data(), MPI_SUM));
@@ -178,27 +210,31 @@ static PetscErrorCode AssembleAPhi(PC pc, const std::vector<std::vector<PetscSca
     PetscCall(MatSetType(gd->APhi, MATAIJ));
     PetscCall(MatSetSizes(gd->APhi, m, n, M, N));
     PetscCall(MatXAIJSetPreallocation(gd->APhi, 1, dnz.data(), onz.data(), nullptr, nullptr));
+    gd->aPhiInterior = (PetscBool)interior;
   } else PetscCall(MatZeroEntries(gd->APhi));
   for (size_t i = 0; i < gd->sub->size(); i++) {
     const Subdomain            &s    = (*gd->sub)[i];
-    const std::vector<PetscInt> cols = Columns(s);
+    const std::vector<PetscInt> cols = Columns(s, kept);
     std::vector<PetscInt>       rows;
     if (cols.empty()) continue;
-    PetscCall(GammaRows(pc, s, rows));
+    PetscCall(GlobalRows(pc, s, s.isG, rows));
     PetscCall(MatSetValues(gd->APhi, (PetscInt)rows.size(), rows.data(), (PetscInt)cols.size(), cols.data(), C[i].data(), ADD_VALUES));
+    if (R[i].empty()) continue;
+    PetscCall(GlobalRows(pc, s, s.isI, rows));
+    PetscCall(MatSetValues(gd->APhi, (PetscInt)rows.size(), rows.data(), (PetscInt)cols.size(), cols.data(), R[i].data(), ADD_VALUES));
   }
   PetscCall(MatAssemblyBegin(gd->APhi, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(gd->APhi, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode AssembleLocal(PC pc, const std::vector<std::vector<PetscScalar>> &blocks, Mat A0)
+static PetscErrorCode AssembleLocal(PC pc, const std::vector<PetscInt> &kept, const std::vector<std::vector<PetscScalar>> &blocks, Mat A0)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
 
   PetscFunctionBegin;
   for (size_t i = 0; i < gd->sub->size(); i++) {
-    const std::vector<PetscInt> cols = Columns((*gd->sub)[i]);
+    const std::vector<PetscInt> cols = Columns((*gd->sub)[i], kept);
     if (cols.empty()) continue;
     PetscCall(MatSetValues(A0, (PetscInt)cols.size(), cols.data(), (PetscInt)cols.size(), cols.data(), blocks[i].data(), ADD_VALUES));
   }
@@ -207,28 +243,41 @@ static PetscErrorCode AssembleLocal(PC pc, const std::vector<std::vector<PetscSc
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode GDSWAssembleCoarseOperator(PC pc, PetscBool basisCurrent)
+/* kept[j]: the place of column j of PhiFull in Phi, or -1 if dropped; empty if none was dropped. */
+static PetscErrorCode KeptColumns(PC pc, std::vector<PetscInt> &kept)
 {
-  PC_GDSW  *gd = (PC_GDSW *)pc->data;
-  PetscBool local, localAll;
+  PC_GDSW        *gd = (PC_GDSW *)pc->data;
+  IS              all;
+  PetscInt        n, N;
+  const PetscInt *idx;
 
   PetscFunctionBegin;
-  local = (PetscBool)(basisCurrent && !gd->keptCols && gd->exactExtension);
-  PetscCallMPI(MPIU_Allreduce(&local, &localAll, 1, MPIU_BOOL, MPI_LAND, PetscObjectComm((PetscObject)pc)));
+  kept.clear();
+  if (!gd->keptCols) PetscFunctionReturn(0);
+  PetscCall(MatGetSize(gd->PhiFull, nullptr, &N));
+  PetscCall(ISAllGather(gd->keptCols, &all));
+  PetscCall(ISGetLocalSize(all, &n));
+  PetscCall(ISGetIndices(all, &idx));
+  kept.assign(N, -1);
+  for (PetscInt k = 0; k < n; k++) kept[idx[k]] = k;
+  PetscCall(ISRestoreIndices(all, &idx));
+  PetscCall(ISDestroy(&all));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode GDSWAssembleCoarseOperator(PC pc, PetscBool basisCurrent)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  /* the interior rows of A Phi vanish where Phi was just extended exactly (per rank: each adds its own blocks) */
+  const bool      interior = !(basisCurrent && gd->exactExtension);
   const PetscBool balanced = (PetscBool)(gd->combination == PC_COMPOSITE_SYMMETRIC_MULTIPLICATIVE);
-  if (gd->A0 && gd->a0ByPtAP != !localAll) { /* the other method made them */
-    PetscCall(MatDestroy(&gd->A0));
-    PetscCall(MatDestroy(&gd->APhi));
-  }
-  gd->a0ByPtAP = (PetscBool)!localAll;
-  if (!localAll) {
-    PetscCall(MatPtAP(gd->A, gd->Phi, gd->A0 ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, 2.0, &gd->A0));
-    if (balanced) PetscCall(MatMatMult(gd->A, gd->Phi, gd->APhi ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, PETSC_DEFAULT, &gd->APhi));
-    PetscFunctionReturn(0);
-  }
-  std::vector<std::vector<PetscScalar>> blocks, C;
-  PetscCall(LocalBlocks(pc, blocks, balanced ? &C : nullptr));
-  if (balanced) PetscCall(AssembleAPhi(pc, C));
+  std::vector<PetscInt>                 kept;
+  std::vector<std::vector<PetscScalar>> blocks, C, R;
+  PetscCall(KeptColumns(pc, kept));
+  PetscCall(LocalBlocks(pc, interior, blocks, balanced ? &C : nullptr, balanced ? &R : nullptr));
+  if (balanced) PetscCall(AssembleAPhi(pc, interior, kept, C, R));
   if (!gd->A0) {
     PetscInt n, N;
     Mat      pre;
@@ -238,7 +287,7 @@ PetscErrorCode GDSWAssembleCoarseOperator(PC pc, PetscBool basisCurrent)
     PetscCall(MatSetType(pre, MATPREALLOCATOR));
     PetscCall(MatSetSizes(pre, n, n, N, N));
     PetscCall(MatSetUp(pre));
-    PetscCall(AssembleLocal(pc, blocks, pre));
+    PetscCall(AssembleLocal(pc, kept, blocks, pre));
     PetscCall(MatCreate(PetscObjectComm((PetscObject)pc), &gd->A0));
     PetscCall(MatSetType(gd->A0, MATAIJ));
     PetscCall(MatSetSizes(gd->A0, n, n, N, N));
@@ -246,6 +295,6 @@ PetscErrorCode GDSWAssembleCoarseOperator(PC pc, PetscBool basisCurrent)
     PetscCall(MatDestroy(&pre));
     PetscCall(MatSetOption(gd->A0, MAT_ROW_ORIENTED, PETSC_FALSE)); /* the blocks are column-major */
   } else PetscCall(MatZeroEntries(gd->A0));
-  PetscCall(AssembleLocal(pc, blocks, gd->A0));
+  PetscCall(AssembleLocal(pc, kept, blocks, gd->A0));
   PetscFunctionReturn(0);
 }

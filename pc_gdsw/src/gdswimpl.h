@@ -120,7 +120,7 @@ typedef struct {
   Mat Phi, A0;
   Mat APhi;                               /* W = A Phi, for the balanced combination */
   PetscBool exactExtension;               /* every interior solve of the last extension was a direct factorisation */
-  PetscBool a0ByPtAP;                     /* A0 was made by MatPtAP (and can be reused by it) */
+  PetscBool aPhiInterior;                 /* W has room for the interior rows of A Phi (a basis not harmonic for A) */
   Mat PhiFull;                            /* Phi before dropping zero columns (== Phi if none) */
   IS  keptCols;
   KSP coarseKsp;
