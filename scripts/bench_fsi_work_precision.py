@@ -24,8 +24,9 @@ p_t (at the finest level, from the three steps) and p_h (at the smallest step, f
 levels; h ~ fluid velocity unknowns^(-1/3), as the levels are not nested), each clipped to
 [0.5, 4]. Errors are relative to |q*| (arrivals: to the arrival time).
 
-Each run is one row of bench/results/work_precision_fsi.csv; a run already there is not run
-again (delete its row to repeat it), so the grid can be filled over several calls.
+Each run is one row of bench/results/work_precision_fsi.csv, with the commit it ran at (the
+scene files change); a run already there is not run again (delete its row to repeat it), so the
+grid can be filled over several calls.
 Usage: scripts/bench_fsi_work_precision.py [--levels 0,1,2] [--geometry straight,curved]
   [--schemes backward_euler,bdf2] [--configs mumps,facsi,inexact] [--plot]"""
 import csv
@@ -101,6 +102,8 @@ def commands_of(rows):
 
 def main():
     rows, start = load(), loadavg()
+    # the scene files and the code a row was measured with (rows are kept across calls)
+    commit = subprocess.run(["git", "describe", "--always", "--dirty"], cwd=TOP, stdout=subprocess.PIPE, text=True).stdout.strip()
     done = {tuple(str(r[k]) for k in KEY) for r in rows}
     report = os.path.join(tempfile.mkdtemp(), "report.json")
     for level in map(int, arg("--levels", ["0", "1", "2"])):
@@ -119,7 +122,7 @@ def main():
                         row = dict(zip(KEY, key), unknowns=sum(r["unknowns"].values()), fluid_unknowns=r["unknowns"]["fluid"],
                                    steps=len(r["steps"]), converged=int(all(s["reason"].startswith("CONVERGED") for s in r["steps"])),
                                    newton=newton, krylov=sum(s["krylov"] for s in r["steps"]), seconds=round(r["seconds"]["total"], 2),
-                                   peak_memory_mib=r["peak_memory_mib"], **quantities(r))
+                                   peak_memory_mib=r["peak_memory_mib"], **quantities(r), commit=commit)
                         print(row, flush=True)
                         rows.append(row)
                         write_results(OUT, rows, commands_of(rows), "scripts/bench_fsi_work_precision.py (one run each; the rows of earlier calls kept)", start)

@@ -104,7 +104,7 @@ def write_results(out, rows, cmds, producer, load_at_start=None):
     if load_at_start is not None:
         producer += f"\n# load average (1, 5, 15 min) at start: {load_at_start}, at end: {loadavg()}; CPU steal during the runs: {cpu_steal()}"
     with open(out + ".csv", "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w = csv.DictWriter(f, fieldnames=list(dict.fromkeys(k for r in rows for k in r)))  # rows of earlier calls may lack later columns
         w.writeheader()
         w.writerows(rows)
     with open(out + ".cmd", "w") as f:
