@@ -77,7 +77,7 @@ static PetscErrorCode PrintSettings(PC pc)
    size of the decomposition (dofs of all overlapping subdomains) and of the coarse space. */
 static PetscErrorCode Solve(KSP ksp, PetscBool transpose, const char *what)
 {
-  Mat                A, Phi;
+  Mat                A, A0;
   PC                 pc;
   Vec                b, x, r;
   PetscInt           its, nsub, ovlDofs = 0, total, coarse = 0;
@@ -107,8 +107,8 @@ static PetscErrorCode Solve(KSP ksp, PetscBool transpose, const char *what)
     ovlDofs += m;
   }
   PetscCallMPI(MPIU_Allreduce(&ovlDofs, &total, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
-  PetscCall(PCGDSWGetCoarseBasis(pc, &Phi));
-  if (Phi) PetscCall(MatGetSize(Phi, nullptr, &coarse));
+  PetscCall(PCGDSWGetCoarseOperator(pc, &A0));
+  if (A0) PetscCall(MatGetSize(A0, nullptr, &coarse));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s: iterations %" PetscInt_FMT " reason %s residual %.3e overlap_dofs %" PetscInt_FMT " coarse %" PetscInt_FMT "\n", what, its, KSPConvergedReasons[reason], (double)(nr / nb), total, coarse));
   PetscCall(VecDestroy(&x));
   PetscCall(VecDestroy(&b));

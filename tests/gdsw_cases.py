@@ -952,14 +952,18 @@ def check_coarse(*opts, np=1):
 def coarse_operator():
     """PCGDSWGetCoarseOperator is Phi^T A Phi (against MatTransposeMatMult(Phi, A Phi), relative
     difference < 1e-12) of the coarse dimension (105 on 2^3 boxes; RGDSW: 6 for the one interior
-    vertex), and PCGDSWGetCoarseKSP's operator, on 1 and 2 ranks."""
+    vertex), and PCGDSWGetCoarseKSP's operator, on 1 and 2 ranks; the balanced combination (the
+    default) gives M A Phi c = Phi c to 1e-10 with the assembled Phi of PCGDSWGetCoarseBasis,
+    which the preconditioner applies from its pieces (interface rows and dense interior blocks)."""
     for np in (1, 2):
         for opts, dim in ((["-n", 8, "-boxes", 2], BOXES[2][0]),
                           (["-n", 8, "-boxes", 2, "-nullspace", "coords", "-pc_gdsw_coarse_space", "rgdsw"], 6)):
-            _, m = check_coarse(*opts, np=np)
+            out, m = check_coarse(*opts, np=np)
             assert (int(m.group(1)), int(m.group(2))) == (dim, dim), m.group(0)
             between(float(m.group(3)), 0, 1e-12, "|A0 - Phi^T A Phi| / |Phi^T A Phi|")
             assert (m.group(4), m.group(7)) == ("pc_gdsw_coarse_", "A0"), m.group(0)
+            exact = re.search(r"\|M A Phi c - Phi c\| / \|Phi c\| (\S+)", out)
+            between(float(exact.group(1)), 0, 1e-10, "|M A Phi c - Phi c| / |Phi c| (the applied Phi is the assembled one)")
 
 
 @case

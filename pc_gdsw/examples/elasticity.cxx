@@ -346,10 +346,10 @@ static PetscErrorCode Report(KSP ksp, Mat A, PetscLogDouble setup, PetscLogDoubl
   PetscCall(MatGetSize(A, &M, nullptr));
   PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCGDSW, &isGDSW));
   if (isGDSW) {
-    Mat Phi;
+    Mat A0; /* its size, without assembling Phi */
     PetscCall(PCGDSWGetInterfaceCounts(pc, &faces, &edges, &vertices));
-    PetscCall(PCGDSWGetCoarseBasis(pc, &Phi));
-    if (Phi) PetscCall(MatGetSize(Phi, nullptr, &coarse));
+    PetscCall(PCGDSWGetCoarseOperator(pc, &A0));
+    if (A0) PetscCall(MatGetSize(A0, nullptr, &coarse));
   }
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "dofs %" PetscInt_FMT " ranks %d iterations %" PetscInt_FMT " reason %s coarse %" PetscInt_FMT " faces %" PetscInt_FMT " edges %" PetscInt_FMT " vertices %" PetscInt_FMT " setup %.3f s solve %.3f s\n",
                         M, size, its, KSPConvergedReasons[reason], coarse, faces, edges, vertices, setup, solve));

@@ -803,7 +803,7 @@ PetscErrorCode PCGDSWGetReuseCoarseBasis(PC pc, PetscBool *flg)
 /*@
    PCGDSWGetCoarseBasis - Gets the coarse basis Phi of `PCGDSW` (global dofs x coarse dofs)
 
-   Not Collective, but the matrix is parallel
+   Collective on pc the first time after each set-up (Phi is assembled then; the preconditioner applies it from its pieces)
 
    Input Parameter:
 .  pc - the preconditioner context, set up

@@ -278,12 +278,12 @@ struct RowLengths {
   std::vector<PetscInt> diag, offdiag;
 };
 
-/* Phi's rows, each set by exactly one subdomain: its interior rows (dense over its columns) and
-   the interface rows of the nodes whose sharing set it leads (over their nonzero columns; Phi_Gamma
+/* Phi's rows, each set by exactly one subdomain: with interior, its interior rows (dense over its
+   columns), and the interface rows of the nodes whose sharing set it leads (over their nonzero columns; Phi_Gamma
    does not depend on A, so neither does this pattern). Rows may belong to other ranks (given
    subdomains need not follow the row layout). With len, only the row lengths are recorded; colRange
    holds every rank's first column of Phi (size + 1). */
-static PetscErrorCode InsertPhi(PC pc, Mat P, RowLengths *len, const std::vector<PetscInt> &colRange)
+static PetscErrorCode InsertPhi(PC pc, Mat P, bool interior, RowLengths *len, const std::vector<PetscInt> &colRange)
 {
   PC_GDSW           *gd = (PC_GDSW *)pc->data;
   const PetscInt     bs = gd->bs;
@@ -310,6 +310,7 @@ static PetscErrorCode InsertPhi(PC pc, Mat P, RowLengths *len, const std::vector
     PetscCall(ISGetIndices(s.isG, &G));
     std::vector<PetscScalar> row(ncols);
     const PetscScalar       *x = nullptr, *y;
+    if (!interior) nI = 0;
     if (nI) PetscCall(MatDenseGetArrayRead(s.PhiI, &x));
     for (PetscInt r = 0; r < nI; r++) {
       const PetscInt grow = s.nodes[I[r] / bs] * bs + I[r] % bs;
@@ -343,83 +344,91 @@ static PetscErrorCode InsertPhi(PC pc, Mat P, RowLengths *len, const std::vector
   PetscFunctionReturn(0);
 }
 
-/* Exact row lengths of Phi (per node: the longest of its dofs' rows), gathered at each node's
-   owner along the node star forest, then the rows. */
-static PetscErrorCode AssemblePhi(PC pc, Mat P, PetscInt ncolsLocal)
+/* Phi with all its columns (or only its interface rows): exact row lengths (per node: the longest
+   of its dofs' rows), gathered at each node's owner along the node star forest, then the rows. */
+static PetscErrorCode AssemblePhi(PC pc, bool interior, Mat *P)
 {
   PC_GDSW       *gd = (PC_GDSW *)pc->data;
   const PetscInt bs = gd->bs;
   PetscMPIInt    size;
-  PetscInt       nroots, nleaves;
+  PetscInt       nroots, nleaves, m, M;
   MPI_Comm       comm;
 
   PetscFunctionBegin;
   PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
   PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(MatGetLocalSize(gd->A, &m, nullptr));
+  PetscCall(MatGetSize(gd->A, &M, nullptr));
+  PetscCall(MatCreate(comm, P));
+  PetscCall(MatSetType(*P, MATAIJ));
+  PetscCall(MatSetSizes(*P, m, gd->nColsFullLocal, M, gd->nColsFull));
   std::vector<PetscInt> colRange(size + 1, 0);
-  PetscCallMPI(MPI_Allgather(&ncolsLocal, 1, MPIU_INT, colRange.data() + 1, 1, MPIU_INT, comm));
+  PetscCallMPI(MPI_Allgather(&gd->nColsFullLocal, 1, MPIU_INT, colRange.data() + 1, 1, MPIU_INT, comm));
   for (PetscMPIInt r = 0; r < size; r++) colRange[r + 1] += colRange[r];
   PetscCall(PetscSFGetGraph(gd->nodeSF, &nroots, &nleaves, nullptr, nullptr));
   RowLengths leaf{std::vector<PetscInt>(nleaves, 0), std::vector<PetscInt>(nleaves, 0)};
   std::vector<PetscInt> dnode(nroots, 0), onode(nroots, 0), dnz(nroots * bs), onz(nroots * bs);
-  PetscCall(InsertPhi(pc, P, &leaf, colRange));
+  PetscCall(InsertPhi(pc, *P, interior, &leaf, colRange));
   PetscCall(PetscSFReduceBegin(gd->nodeSF, MPIU_INT, leaf.diag.data(), dnode.data(), MPI_MAX));
   PetscCall(PetscSFReduceEnd(gd->nodeSF, MPIU_INT, leaf.diag.data(), dnode.data(), MPI_MAX));
   PetscCall(PetscSFReduceBegin(gd->nodeSF, MPIU_INT, leaf.offdiag.data(), onode.data(), MPI_MAX));
   PetscCall(PetscSFReduceEnd(gd->nodeSF, MPIU_INT, leaf.offdiag.data(), onode.data(), MPI_MAX));
   for (PetscInt a = 0; a < nroots; a++)
     for (PetscInt c = 0; c < bs; c++) dnz[a * bs + c] = dnode[a], onz[a * bs + c] = onode[a];
-  PetscCall(MatXAIJSetPreallocation(P, 1, dnz.data(), onz.data(), nullptr, nullptr));
-  PetscCall(InsertPhi(pc, P, nullptr, colRange));
+  PetscCall(MatXAIJSetPreallocation(*P, 1, dnz.data(), onz.data(), nullptr, nullptr));
+  PetscCall(InsertPhi(pc, *P, interior, nullptr, colRange));
+  PetscFunctionReturn(0);
+}
+
+/* The kept columns of a matrix with all of Phi's columns. */
+static PetscErrorCode KeptSubmatrix(PC pc, Mat full, Mat *kept)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+  PetscInt rstart, rend;
+  IS       rows;
+
+  PetscFunctionBegin;
+  PetscCall(MatGetOwnershipRange(full, &rstart, &rend));
+  PetscCall(ISCreateStride(PetscObjectComm((PetscObject)pc), rend - rstart, rstart, 1, &rows));
+  PetscCall(MatCreateSubMatrix(full, rows, gd->keptCols, MAT_INITIAL_MATRIX, kept));
+  PetscCall(ISDestroy(&rows));
   PetscFunctionReturn(0);
 }
 
 /* Columns that vanish everywhere (e.g. an RGDSW translation whose support is all Dirichlet)
-   would make A_0 singular: drop them. */
-static PetscErrorCode DropZeroColumns(PC pc, MatReuse reuse)
+   would make A_0 singular: drop them. A column vanishes exactly where its interface values do
+   (Phi_I = -A_II^{-1} A_IGamma Phi_Gamma), so the interface rows decide, once per decomposition;
+   PhiGamma keeps the others. */
+static PetscErrorCode DropZeroColumns(PC pc, Mat full)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
-  PetscInt M, N, cstart, cend, rstart, rend;
+  PetscInt M, N, cstart, cend;
 
   PetscFunctionBegin;
-  if (reuse == MAT_REUSE_MATRIX) {
-    if (gd->keptCols) {
-      IS rows;
-      PetscCall(MatGetOwnershipRange(gd->PhiFull, &rstart, &rend));
-      PetscCall(ISCreateStride(PetscObjectComm((PetscObject)pc), rend - rstart, rstart, 1, &rows));
-      PetscCall(MatCreateSubMatrix(gd->PhiFull, rows, gd->keptCols, MAT_REUSE_MATRIX, &gd->Phi));
-      PetscCall(ISDestroy(&rows));
-    }
-    PetscFunctionReturn(0);
-  }
-  PetscCall(MatGetSize(gd->PhiFull, &M, &N));
-  PetscCall(MatGetOwnershipRangeColumn(gd->PhiFull, &cstart, &cend));
+  PetscCall(MatGetSize(full, &M, &N));
+  PetscCall(MatGetOwnershipRangeColumn(full, &cstart, &cend));
   std::vector<PetscReal> norms(N);
-  PetscCall(MatGetColumnNorms(gd->PhiFull, NORM_INFINITY, norms.data()));
+  PetscCall(MatGetColumnNorms(full, NORM_INFINITY, norms.data()));
   std::vector<PetscInt> kept;
   for (PetscInt j = cstart; j < cend; j++)
     if (norms[j] > 0) kept.push_back(j);
   PetscInt nzero = (cend - cstart) - (PetscInt)kept.size(), gzero;
   PetscCallMPI(MPIU_Allreduce(&nzero, &gzero, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)pc)));
   if (!gzero) {
-    PetscCall(PetscObjectReference((PetscObject)gd->PhiFull));
-    gd->Phi = gd->PhiFull;
+    PetscCall(PetscObjectReference((PetscObject)full));
+    gd->PhiGamma = full;
     PetscFunctionReturn(0);
   }
   PetscCall(PetscInfo(pc, "dropping %" PetscInt_FMT " coarse functions that vanish on every non-Dirichlet dof\n", gzero));
-  IS rows;
-  PetscCall(MatGetOwnershipRange(gd->PhiFull, &rstart, &rend));
-  PetscCall(ISCreateStride(PetscObjectComm((PetscObject)pc), rend - rstart, rstart, 1, &rows));
   PetscCall(ISCreateGeneral(PetscObjectComm((PetscObject)pc), (PetscInt)kept.size(), kept.data(), PETSC_COPY_VALUES, &gd->keptCols));
-  PetscCall(MatCreateSubMatrix(gd->PhiFull, rows, gd->keptCols, MAT_INITIAL_MATRIX, &gd->Phi));
-  PetscCall(ISDestroy(&rows));
+  PetscCall(KeptSubmatrix(pc, full, &gd->PhiGamma));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode GDSWBuildCoarseBasis(PC pc)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
-  PetscInt m, M, n, N;
+  Mat      full;
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(GDSW_Basis, pc, 0, 0, 0));
@@ -427,27 +436,25 @@ PetscErrorCode GDSWBuildCoarseBasis(PC pc)
     if (gd->coarseType == PC_GDSW_COARSE_RGDSW) ReduceToCoarseNodes(gd, s, s.groups);
     for (auto &g : s.groups) GroupValues(gd, s, g);
   }
-  PetscCall(NumberGroups(pc, &n));
+  PetscCall(NumberGroups(pc, &gd->nColsFullLocal));
+  PetscCallMPI(MPIU_Allreduce(&gd->nColsFullLocal, &gd->nColsFull, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)pc)));
   for (auto &s : *gd->sub) PetscCall(SetUpExtension(pc, s));
+  PetscCall(AssemblePhi(pc, false, &full));
+  PetscCall(DropZeroColumns(pc, full));
+  PetscCall(MatDestroy(&full));
+  PetscCall(MatGetSize(gd->PhiGamma, nullptr, &gd->coarseDim));
   PetscCall(PetscLogEventEnd(GDSW_Basis, pc, 0, 0, 0));
 
   PetscCall(PetscLogEventBegin(GDSW_Extension, pc, 0, 0, 0));
   gd->exactExtension = PETSC_TRUE;
   for (auto &s : *gd->sub) PetscCall(Extend(pc, s, MAT_INITIAL_MATRIX));
-  PetscCall(MatGetLocalSize(gd->A, &m, nullptr));
-  PetscCall(MatGetSize(gd->A, &M, nullptr));
-  PetscCallMPI(MPIU_Allreduce(&n, &N, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)pc)));
-  PetscCall(MatCreate(PetscObjectComm((PetscObject)pc), &gd->PhiFull));
-  PetscCall(MatSetType(gd->PhiFull, MATAIJ));
-  PetscCall(MatSetSizes(gd->PhiFull, m, n, M, N));
-  PetscCall(AssemblePhi(pc, gd->PhiFull, n));
-  PetscCall(DropZeroColumns(pc, MAT_INITIAL_MATRIX));
-  PetscCall(MatGetSize(gd->Phi, nullptr, &gd->coarseDim));
+  PetscCall(GDSWCreatePhiOperator(pc));
   PetscCall(PetscLogEventEnd(GDSW_Extension, pc, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
-/* New values of A with the same pattern: refactor the interiors and re-extend. */
+/* New values of A with the same pattern: refactor the interiors and re-extend (Phi_Gamma does
+   not depend on A). */
 PetscErrorCode GDSWUpdateCoarseBasis(PC pc)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
@@ -456,9 +463,24 @@ PetscErrorCode GDSWUpdateCoarseBasis(PC pc)
   PetscCall(PetscLogEventBegin(GDSW_Extension, pc, 0, 0, 0));
   gd->exactExtension = PETSC_TRUE;
   for (auto &s : *gd->sub) PetscCall(Extend(pc, s, MAT_REUSE_MATRIX));
-  PetscCall(MatZeroEntries(gd->PhiFull));
-  PetscCall(InsertPhi(pc, gd->PhiFull, nullptr, {}));
-  PetscCall(DropZeroColumns(pc, MAT_REUSE_MATRIX));
+  PetscCall(MatDestroy(&gd->PhiAssembled));
   PetscCall(PetscLogEventEnd(GDSW_Extension, pc, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* Phi assembled, its kept columns: for PCGDSWGetCoarseBasis(), made on the first request after a
+   set-up. */
+PetscErrorCode GDSWAssemblePhiMatrix(PC pc)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+  Mat      full;
+
+  PetscFunctionBegin;
+  if (gd->PhiAssembled) PetscFunctionReturn(0);
+  PetscCall(AssemblePhi(pc, true, &full));
+  if (gd->keptCols) {
+    PetscCall(KeptSubmatrix(pc, full, &gd->PhiAssembled));
+    PetscCall(MatDestroy(&full));
+  } else gd->PhiAssembled = full;
   PetscFunctionReturn(0);
 }

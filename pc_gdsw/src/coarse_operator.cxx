@@ -16,17 +16,6 @@
 
 using gdsw::Subdomain;
 
-/* Columns of Phi a subdomain touches, in the order of its dense blocks, numbered as in Phi: with
-   columns dropped (DropZeroColumns), through kept (the full number's place in Phi, or -1, which
-   MatSetValues() ignores; the dropped columns of a block are zero). */
-static std::vector<PetscInt> Columns(const Subdomain &s, const std::vector<PetscInt> &kept)
-{
-  std::vector<PetscInt> cols;
-  for (const auto &g : s.groups)
-    for (PetscInt j = 0; j < g.ncols; j++) cols.push_back(kept.empty() ? g.col0 + j : kept[g.col0 + j]);
-  return cols;
-}
-
 /* Smallest subdomain id in both sorted sets. */
 static PetscInt FirstCommon(const std::vector<PetscInt> &a, const std::vector<PetscInt> &b)
 {
@@ -153,23 +142,6 @@ static PetscErrorCode LocalBlocks(PC pc, bool interior, std::vector<std::vector<
   PetscFunctionReturn(0);
 }
 
-/* The global rows of a subdomain's interior or interface dofs. */
-static PetscErrorCode GlobalRows(PC pc, const Subdomain &s, IS local, std::vector<PetscInt> &rows)
-{
-  PC_GDSW        *gd = (PC_GDSW *)pc->data;
-  const PetscInt  bs = gd->bs;
-  PetscInt        n;
-  const PetscInt *idx;
-
-  PetscFunctionBegin;
-  PetscCall(ISGetLocalSize(local, &n));
-  PetscCall(ISGetIndices(local, &idx));
-  rows.resize(n);
-  for (PetscInt r = 0; r < n; r++) rows[r] = s.nodes[idx[r] / bs] * bs + idx[r] % bs;
-  PetscCall(ISRestoreIndices(local, &idx));
-  PetscFunctionReturn(0);
-}
-
 /* W = A Phi = sum_i R_Gamma_i^T C_i (+ R_I_i^T R_i with interior). A row's length is at most the
    sum of the column counts of the subdomains that share its node, split by the columns' owner:
    summed at the node's owner along the node star forest (assembly drops what is not used). W made
@@ -189,7 +161,7 @@ static PetscErrorCode AssembleAPhi(PC pc, bool interior, const std::vector<Petsc
     PetscCall(PetscSFGetGraph(gd->nodeSF, &nroots, &nleaves, nullptr, &owner));
     std::vector<PetscInt> leafD(nleaves, 0), leafO(nleaves, 0), rootD(nroots, 0), rootO(nroots, 0);
     for (const auto &s : *gd->sub) {
-      const std::vector<PetscInt> cols = Columns(s, kept);
+      const std::vector<PetscInt> cols = GDSWPhiColumns(s, kept);
       for (size_t a = 0; a < s.nodes.size(); a++) {
         if (!interior && (*gd->sets)[s.setOf[a]].size() < 2) continue;
         const PetscInt leaf = s.leaf0 + (PetscInt)a, r = owner[leaf].rank;
@@ -214,13 +186,13 @@ static PetscErrorCode AssembleAPhi(PC pc, bool interior, const std::vector<Petsc
   } else PetscCall(MatZeroEntries(gd->APhi));
   for (size_t i = 0; i < gd->sub->size(); i++) {
     const Subdomain            &s    = (*gd->sub)[i];
-    const std::vector<PetscInt> cols = Columns(s, kept);
+    const std::vector<PetscInt> cols = GDSWPhiColumns(s, kept);
     std::vector<PetscInt>       rows;
     if (cols.empty()) continue;
-    PetscCall(GlobalRows(pc, s, s.isG, rows));
+    PetscCall(GDSWGlobalRows(pc, s, s.isG, rows));
     PetscCall(MatSetValues(gd->APhi, (PetscInt)rows.size(), rows.data(), (PetscInt)cols.size(), cols.data(), C[i].data(), ADD_VALUES));
     if (R[i].empty()) continue;
-    PetscCall(GlobalRows(pc, s, s.isI, rows));
+    PetscCall(GDSWGlobalRows(pc, s, s.isI, rows));
     PetscCall(MatSetValues(gd->APhi, (PetscInt)rows.size(), rows.data(), (PetscInt)cols.size(), cols.data(), R[i].data(), ADD_VALUES));
   }
   PetscCall(MatAssemblyBegin(gd->APhi, MAT_FINAL_ASSEMBLY));
@@ -234,34 +206,12 @@ static PetscErrorCode AssembleLocal(PC pc, const std::vector<PetscInt> &kept, co
 
   PetscFunctionBegin;
   for (size_t i = 0; i < gd->sub->size(); i++) {
-    const std::vector<PetscInt> cols = Columns((*gd->sub)[i], kept);
+    const std::vector<PetscInt> cols = GDSWPhiColumns((*gd->sub)[i], kept);
     if (cols.empty()) continue;
     PetscCall(MatSetValues(A0, (PetscInt)cols.size(), cols.data(), (PetscInt)cols.size(), cols.data(), blocks[i].data(), ADD_VALUES));
   }
   PetscCall(MatAssemblyBegin(A0, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(A0, MAT_FINAL_ASSEMBLY));
-  PetscFunctionReturn(0);
-}
-
-/* kept[j]: the place of column j of PhiFull in Phi, or -1 if dropped; empty if none was dropped. */
-static PetscErrorCode KeptColumns(PC pc, std::vector<PetscInt> &kept)
-{
-  PC_GDSW        *gd = (PC_GDSW *)pc->data;
-  IS              all;
-  PetscInt        n, N;
-  const PetscInt *idx;
-
-  PetscFunctionBegin;
-  kept.clear();
-  if (!gd->keptCols) PetscFunctionReturn(0);
-  PetscCall(MatGetSize(gd->PhiFull, nullptr, &N));
-  PetscCall(ISAllGather(gd->keptCols, &all));
-  PetscCall(ISGetLocalSize(all, &n));
-  PetscCall(ISGetIndices(all, &idx));
-  kept.assign(N, -1);
-  for (PetscInt k = 0; k < n; k++) kept[idx[k]] = k;
-  PetscCall(ISRestoreIndices(all, &idx));
-  PetscCall(ISDestroy(&all));
   PetscFunctionReturn(0);
 }
 
@@ -275,7 +225,7 @@ PetscErrorCode GDSWAssembleCoarseOperator(PC pc, PetscBool basisCurrent)
   const PetscBool balanced = (PetscBool)(gd->combination == PC_COMPOSITE_SYMMETRIC_MULTIPLICATIVE);
   std::vector<PetscInt>                 kept;
   std::vector<std::vector<PetscScalar>> blocks, C, R;
-  PetscCall(KeptColumns(pc, kept));
+  PetscCall(GDSWKeptColumns(pc, kept));
   PetscCall(LocalBlocks(pc, interior, blocks, balanced ? &C : nullptr, balanced ? &R : nullptr));
   if (balanced) PetscCall(AssembleAPhi(pc, interior, kept, C, R));
   if (!gd->A0) {

@@ -107,7 +107,12 @@ static PetscErrorCode PCReset_GDSW(PC pc)
   PetscCall(ISDestroy(&gd->isU));
   PetscCall(MatDestroy(&gd->A));
   PetscCall(MatDestroy(&gd->Phi));
-  PetscCall(MatDestroy(&gd->PhiFull));
+  PetscCall(MatDestroy(&gd->PhiGamma));
+  PetscCall(MatDestroy(&gd->PhiAssembled));
+  PetscCall(VecScatterDestroy(&gd->phiCols));
+  PetscCall(VecScatterDestroy(&gd->phiInterior));
+  PetscCall(VecDestroy(&gd->phiColsWork));
+  PetscCall(VecDestroy(&gd->phiIntWork));
   PetscCall(ISDestroy(&gd->keptCols));
   PetscCall(MatDestroy(&gd->A0));
   PetscCall(MatDestroy(&gd->APhi));
@@ -781,7 +786,9 @@ static PetscErrorCode PCGDSWGetCoarseBasis_GDSW(PC pc, Mat *Phi)
 {
   PetscFunctionBegin;
   GDSW_REQUIRE_SETUP(pc);
-  *Phi = ((PC_GDSW *)pc->data)->Phi;
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+  if (gd->Phi) PetscCall(GDSWAssemblePhiMatrix(pc));
+  *Phi = gd->PhiAssembled;
   PetscFunctionReturn(0);
 }
 

@@ -2,7 +2,8 @@
 /* Private data of PCGDSW. The setup is a pipeline of modules, each in its own file:
      decomposition.cxx  nonoverlapping subdomains Omega~_i and overlapping Omega_i^delta, their matrices
      interface.cxx      sharing sets, Dirichlet dofs, interface components, coarse numbering
-     coarse_basis.cxx   Phi_Gamma per component, harmonic extension Phi_I, global Phi
+     coarse_basis.cxx   Phi_Gamma per component, harmonic extension Phi_I, Phi's interface rows
+     phi.cxx            Phi as an operator: interface rows assembled, interior rows as dense blocks
      coarse_operator.cxx A_0 = Phi^T A Phi
      coarse_solver.cxx  the solver of A_0
      first_level.cxx    local solvers on Omega_i^delta and their restriction/prolongation
@@ -69,6 +70,7 @@ struct Subdomain {
   Factorisation factorisation[2] = {UNFACTORED, UNFACTORED}; /* per LocalMatrix */
   Vec x = nullptr, y = nullptr;         /* views into the work vectors (arrays placed in apply) */
   PetscInt wOffset = 0;                 /* start of its slice of the concatenated work vector */
+  PetscInt intOffset = 0, colOffset = 0; /* start of its slices of Phi's interior and column work vectors */
   std::vector<PetscInt> rowRank;        /* per row of Aovl: its node's place in the nested dissection */
 };
 
@@ -117,11 +119,15 @@ typedef struct {
   PetscInt  counts[3];                    /* faces, edges, vertices (global) */
   size_t    hugeBytes;                    /* given out on huge pages by the last set-up (this rank) */
   /* coarse level */
-  Mat Phi, A0;
+  Mat Phi, A0;                            /* Phi: the operator of phi.cxx */
+  Mat PhiGamma;                           /* Phi's interface rows (AIJ, the kept columns) */
+  Mat PhiAssembled;                       /* Phi as AIJ, made when asked for (PCGDSWGetCoarseBasis()) */
+  VecScatter phiCols, phiInterior;        /* coarse vector -> the subdomains' columns; global -> their interior rows */
+  Vec phiColsWork, phiIntWork;
+  PetscInt nColsFull, nColsFullLocal;     /* Phi's columns before dropping zero ones (global, this rank's) */
   Mat APhi;                               /* W = A Phi, for the balanced combination */
   PetscBool exactExtension;               /* every interior solve of the last extension was a direct factorisation */
   PetscBool aPhiInterior;                 /* W has room for the interior rows of A Phi (a basis not harmonic for A) */
-  Mat PhiFull;                            /* Phi before dropping zero columns (== Phi if none) */
   IS  keptCols;
   KSP coarseKsp;
   Vec r0, x0, c0;                         /* coarse work (c0: the balanced combination's first correction) */
@@ -144,6 +150,13 @@ PETSC_INTERN PetscErrorCode GDSWBuildInterface(PC);
 PETSC_INTERN PetscErrorCode GDSWDirichletRowsChanged(PC, PetscBool *);
 PETSC_INTERN PetscErrorCode GDSWBuildCoarseBasis(PC);
 PETSC_INTERN PetscErrorCode GDSWUpdateCoarseBasis(PC);
+PETSC_INTERN PetscErrorCode GDSWAssemblePhiMatrix(PC);
+PETSC_INTERN PetscErrorCode GDSWCreatePhiOperator(PC);
+/* Phi's numbering: a subdomain's columns (through kept, see GDSWKeptColumns(); -1 where dropped),
+   the global rows of its local dofs, and kept[j], the place of column j among the kept ones */
+PETSC_INTERN std::vector<PetscInt> GDSWPhiColumns(const gdsw::Subdomain &, const std::vector<PetscInt> &);
+PETSC_INTERN PetscErrorCode GDSWGlobalRows(PC, const gdsw::Subdomain &, IS, std::vector<PetscInt> &);
+PETSC_INTERN PetscErrorCode GDSWKeptColumns(PC, std::vector<PetscInt> &);
 PETSC_INTERN PetscErrorCode GDSWAssembleCoarseOperator(PC, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWSetUpCoarseSolver(PC, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWSetUpFirstLevel(PC, MatReuse);
