@@ -778,8 +778,10 @@ def local_precision():
     is double. Q1 elasticity, 4 subdomains on 2 ranks: -ksp_view counts 4 factors kept in single
     precision (none by default), the first one's solve deviates from the double one by less than
     1e-5 (unit roundoff 6e-8 times a modest condition number), and CG takes the iterations of
-    CHOLMOD's double factor within one. At nu = 0.4999 (134 iterations with double factors) at
-    most 5 % more. What the option costs: GMRES to rtol 1e-12 stalls above a true relative
+    CHOLMOD's double factor within one. At nu = 0.4999 (133 iterations with double factors) at
+    most 20 % more: there CG's count with single factors moves with the rounding of the rest of the
+    preconditioner (139 and 150 measured for two summation orders of the coarse basis's product,
+    133 and 134 with double factors). What the option costs: GMRES to rtol 1e-12 stalls above a true relative
     residual of 1e-7 with single factors (7e-6 measured) and reaches 1e-8 with double ones (5e-10),
     while FGMRES reaches 1e-8 with both (1e-12). -pc_gdsw_sub_mat_cholmod_single_deviation_max
     0 keeps every factor in double precision, says so under -info, and takes exactly the double
@@ -801,7 +803,7 @@ def local_precision():
     assert int(re.search(r"^dofs .* iterations (\d+)", kept, re.M).group(1)) == double
     near = ["-n", 16, "-nu", 0.4999, "-ksp_rtol", 1e-8, "-ksp_norm_type", "unpreconditioned"]
     its = [elasticity(*near, "-pc_gdsw_local_precision", p, np=2)["iterations"] for p in ("single", "double")]
-    between(its[0], its[1], 1.05 * its[1], "iterations at nu = 0.4999, single against double")
+    between(its[0], its[1], 1.2 * its[1], "iterations at nu = 0.4999, single against double")
     for ksp, reached in (("gmres", {"single": False, "double": True}), ("fgmres", {"single": True, "double": True})):
         for p, ok in reached.items():
             out = run([ELASTICITY, "-n", 24, "-ksp_type", ksp, "-ksp_rtol", 1e-12, "-ksp_max_it", 300, "-ksp_gmres_restart", 300,
