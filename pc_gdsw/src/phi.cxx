@@ -98,8 +98,10 @@ static PetscErrorCode InteriorBlocks(PC pc, bool transpose)
   PetscFunctionReturn(0);
 }
 
-/* z = y + Phi x (y may be null: z = Phi x) */
-static PetscErrorCode PhiMultAdd(Mat P, Vec x, Vec y, Vec z)
+/* z = y + Phi x, or y + Phi^T x (y may be null): the interface rows' product, then the interior
+   blocks between a scatter in (the subdomains' columns, or their interior rows) and a scatter out
+   adding to z (the other way round). */
+static PetscErrorCode Apply(Mat P, Vec x, Vec y, Vec z, bool transpose)
 {
   PC       pc;
   PC_GDSW *gd;
@@ -107,48 +109,44 @@ static PetscErrorCode PhiMultAdd(Mat P, Vec x, Vec y, Vec z)
   PetscFunctionBegin;
   PetscCall(MatShellGetContext(P, &pc));
   gd = (PC_GDSW *)pc->data;
-  if (y) PetscCall(MatMultAdd(gd->PhiGamma, x, y, z));
-  else PetscCall(MatMult(gd->PhiGamma, x, z));
-  PetscCall(VecSet(gd->phiColsWork, 0.0)); /* the dropped columns' places are not scattered */
-  PetscCall(VecScatterBegin(gd->phiCols, x, gd->phiColsWork, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(gd->phiCols, x, gd->phiColsWork, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(InteriorBlocks(pc, false));
-  PetscCall(VecScatterBegin(gd->phiInterior, gd->phiIntWork, z, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecScatterEnd(gd->phiInterior, gd->phiIntWork, z, ADD_VALUES, SCATTER_REVERSE));
+  if (transpose) PetscCall(y ? MatMultTransposeAdd(gd->PhiGamma, x, y, z) : MatMultTranspose(gd->PhiGamma, x, z));
+  else PetscCall(y ? MatMultAdd(gd->PhiGamma, x, y, z) : MatMult(gd->PhiGamma, x, z));
+  VecScatter in = transpose ? gd->phiInterior : gd->phiCols, out = transpose ? gd->phiCols : gd->phiInterior;
+  Vec        inWork = transpose ? gd->phiIntWork : gd->phiColsWork, outWork = transpose ? gd->phiColsWork : gd->phiIntWork;
+  PetscCall(VecSet(gd->phiColsWork, 0.0)); /* dropped columns and subdomains without interior are never written */
+  PetscCall(VecScatterBegin(in, x, inWork, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(in, x, inWork, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(InteriorBlocks(pc, transpose));
+  PetscCall(VecScatterBegin(out, outWork, z, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecScatterEnd(out, outWork, z, ADD_VALUES, SCATTER_REVERSE));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode PhiMult(Mat P, Vec x, Vec z)
 {
   PetscFunctionBegin;
-  PetscCall(PhiMultAdd(P, x, nullptr, z));
+  PetscCall(Apply(P, x, nullptr, z, false));
   PetscFunctionReturn(0);
 }
 
-/* z = y + Phi^T x (y may be null) */
-static PetscErrorCode PhiMultTransposeAdd(Mat P, Vec x, Vec y, Vec z)
+static PetscErrorCode PhiMultAdd(Mat P, Vec x, Vec y, Vec z)
 {
-  PC       pc;
-  PC_GDSW *gd;
-
   PetscFunctionBegin;
-  PetscCall(MatShellGetContext(P, &pc));
-  gd = (PC_GDSW *)pc->data;
-  if (y) PetscCall(MatMultTransposeAdd(gd->PhiGamma, x, y, z));
-  else PetscCall(MatMultTranspose(gd->PhiGamma, x, z));
-  PetscCall(VecScatterBegin(gd->phiInterior, x, gd->phiIntWork, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(gd->phiInterior, x, gd->phiIntWork, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecSet(gd->phiColsWork, 0.0)); /* subdomains without interior add nothing */
-  PetscCall(InteriorBlocks(pc, true));
-  PetscCall(VecScatterBegin(gd->phiCols, gd->phiColsWork, z, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecScatterEnd(gd->phiCols, gd->phiColsWork, z, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(Apply(P, x, y, z, false));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode PhiMultTranspose(Mat P, Vec x, Vec z)
 {
   PetscFunctionBegin;
-  PetscCall(PhiMultTransposeAdd(P, x, nullptr, z));
+  PetscCall(Apply(P, x, nullptr, z, true));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PhiMultTransposeAdd(Mat P, Vec x, Vec y, Vec z)
+{
+  PetscFunctionBegin;
+  PetscCall(Apply(P, x, y, z, true));
   PetscFunctionReturn(0);
 }
 
