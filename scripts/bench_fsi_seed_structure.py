@@ -7,9 +7,16 @@ Per run: Newton steps, GMRES per Newton step, seconds (step, assembly, the struc
 its applications = the GDSWApply event, the rest), peak memory. Each run takes 4-5 minutes and
 18 GiB on 2 ranks. Writes bench/results/fsi_seed_structure.{csv,cmd} and each run's -log_view
 (fsi_seed_structure_K.log_view.txt).
-Usage: scripts/bench_fsi_seed_structure.py [--only NAME,...]"""
+With --against DIR (a built checkout of an earlier commit, meshes/tube1_seed_fsi.msh in it) it
+runs the scene's variant from DIR and from here alternately, --pairs N times (default 3), each
+with its own fsi_app and scenes, and writes bench/results/fsi_seed_share_ab.{csv,cmd} with the
+medians: the structure's share against the code of that commit, settled over the machine's
+fast and slow phases.
+Usage: scripts/bench_fsi_seed_structure.py [--only NAME,...] [--against DIR [--pairs N]]"""
 import os
 import re
+import statistics
+import subprocess
 import sys
 import tempfile
 
@@ -27,7 +34,49 @@ VARIANTS = {
 }
 
 
+def measure(cmd, report, log):
+    """One run's step costs and the structure's applications (the GDSWApply event), or None."""
+    r = run_report(f"{cmd} -log_view :{log} -report {report}", report)
+    if r is None:
+        return None
+    row = step_costs(r)
+    m = re.search(r"^GDSWApply\s+\d+ \S+ (\S+)", open(log).read(), re.M)
+    row["structure_apply_per_step"] = round(float(m.group(1)) / row["steps"], 1) if m else ""
+    row["structure_share_per_step"] = round(row["structure_setup_per_step"] + (row["structure_apply_per_step"] or 0), 1)
+    return row
+
+
+def against(base_dir, pairs):
+    """Alternating pairs, the earlier commit's run first in odd pairs, second in even ones."""
+    commit = subprocess.run(["git", "-C", base_dir, "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
+    here = subprocess.run(["git", "-C", TOP, "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
+    opts = list(VARIANTS.values())[0]
+    sides = {commit: (base_dir, BASE.replace(TOP, base_dir)), here: (TOP, BASE)}
+    load, rows, cmds, tmp = loadavg(), [], [], tempfile.mkdtemp()
+    for p in range(pairs):
+        for name in ([commit, here] if p % 2 == 0 else [here, commit]):
+            cwd, base = sides[name]
+            log = os.path.join(TOP, "bench", "results", f"fsi_seed_share_ab_{len(rows)}.log_view.txt")
+            os.chdir(cwd)  # the scene files are the commit's own
+            row = measure(f"{base} {opts}", os.path.join(tmp, "report.json"), log)
+            os.chdir(TOP)
+            row = {"pair": p + 1, "commit": name, "load": loadavg(), **(row or {"converged": 0})}
+            print(row, flush=True)
+            rows.append(row)
+            cmds.append(f"(cd {'<checkout of ' + commit + '>' if cwd != TOP else '.'} && {base.replace(cwd + '/', '')} {opts} -log_view :{log} -report report.json)")
+    for name in sides:
+        mine = [r for r in rows if r["commit"] == name and r.get("converged")]
+        med = {k: round(statistics.median(r[k] for r in mine), 2) for k in mine[0] if k not in ("pair", "commit", "load", "converged")} if mine else {}
+        rows.append({"pair": "median", "commit": name, **med})
+    write_results(os.path.join(TOP, "bench", "results", "fsi_seed_share_ab"), rows, cmds,
+                  f"scripts/bench_fsi_seed_structure.py --against <checkout of {commit}> --pairs {pairs} (alternating, back to back)", load)
+
+
 def main():
+    if "--against" in sys.argv:
+        i = sys.argv.index("--against")
+        pairs = int(sys.argv[sys.argv.index("--pairs") + 1]) if "--pairs" in sys.argv else 3
+        return against(os.path.abspath(sys.argv[i + 1]), pairs)
     if not os.path.exists(MESH):
         print(run(os.path.join(TOP, "scripts", "make-meshes") + " tube1 seed_fsi"))
     only = sys.argv[sys.argv.index("--only") + 1].split(",") if "--only" in sys.argv else None
@@ -36,21 +85,11 @@ def main():
     for k, (name, opts) in enumerate(VARIANTS.items()):
         if only and not any(name.startswith(o) for o in only):
             continue
-        report = os.path.join(tmp, "report.json")
         log = os.path.join(TOP, "bench", "results", f"fsi_seed_structure_{k}.log_view.txt")
-        cmd = f"{BASE} {opts} -log_view :{log} -report {report}"
-        r = run_report(cmd, report)
-        row = {"structure_split": name}
-        if r is None:
-            row["converged"] = 0
-        else:
-            row.update(step_costs(r))
-            m = re.search(r"^GDSWApply\s+\d+ \S+ (\S+)", open(log).read(), re.M)
-            row["structure_apply_per_step"] = round(float(m.group(1)) / row["steps"], 1) if m else ""
-            row["structure_share_per_step"] = round(row["structure_setup_per_step"] + (row["structure_apply_per_step"] or 0), 1)
+        row = {"structure_split": name, **(measure(f"{BASE} {opts}", os.path.join(tmp, "report.json"), log) or {"converged": 0})}
         print(row, flush=True)
         rows.append(row)
-        cmds.append(cmd)
+        cmds.append(f"{BASE} {opts} -log_view :{log} -report report.json")
     write_results(os.path.join(TOP, "bench", "results", "fsi_seed_structure"), rows, cmds,
                   "scripts/bench_fsi_seed_structure.py (one run each, back to back)", load)
 

@@ -9,7 +9,7 @@
    extension pays one dense product Phi_I^T (A Phi)_I per subdomain, where MatPtAP cost more than
    the extension it saved.
    The balanced combination also needs W = A Phi: the same blocks, summed on the interface rows,
-   and on the interior rows where they do not vanish. */
+   and where the interior rows do not vanish, their blocks kept for phi.cxx's operator. */
 #include "gdswimpl.h"
 #include <petscblaslapack.h>
 #include <algorithm>
@@ -142,11 +142,13 @@ static PetscErrorCode LocalBlocks(PC pc, bool interior, std::vector<std::vector<
   PetscFunctionReturn(0);
 }
 
-/* W = A Phi = sum_i R_Gamma_i^T C_i (+ R_I_i^T R_i with interior). A row's length is at most the
-   sum of the column counts of the subdomains that share its node, split by the columns' owner:
-   summed at the node's owner along the node star forest (assembly drops what is not used). W made
-   without the interior rows is made again when they are needed. */
-static PetscErrorCode AssembleAPhi(PC pc, bool interior, const std::vector<PetscInt> &kept, const std::vector<std::vector<PetscScalar>> &C, const std::vector<std::vector<PetscScalar>> &R)
+/* W = A Phi = sum_i R_Gamma_i^T C_i (+ R_I_i^T R_i with interior). The interface rows are
+   assembled (APhiGamma): a row's length is at most the sum of the column counts of the subdomains
+   that share its node, split by the columns' owner, summed at the node's owner along the node star
+   forest (assembly drops what is not used). The interior rows, disjoint between subdomains and
+   dense over their columns, stay the subdomains' blocks R_i, applied as Phi's interior rows are
+   (phi.cxx). */
+static PetscErrorCode AssembleAPhi(PC pc, bool interior, const std::vector<PetscInt> &kept, const std::vector<std::vector<PetscScalar>> &C, std::vector<std::vector<PetscScalar>> &R)
 {
   PC_GDSW           *gd = (PC_GDSW *)pc->data;
   const PetscInt     bs = gd->bs;
@@ -155,15 +157,14 @@ static PetscErrorCode AssembleAPhi(PC pc, bool interior, const std::vector<Petsc
   PetscInt           nroots, nleaves, m, M, n, N;
 
   PetscFunctionBegin;
-  if (gd->APhi && interior && !gd->aPhiInterior) PetscCall(MatDestroy(&gd->APhi));
-  if (!gd->APhi) {
+  if (!gd->APhiGamma) {
     PetscCall(MatGetOwnershipRangesColumn(gd->Phi, &colRange));
     PetscCall(PetscSFGetGraph(gd->nodeSF, &nroots, &nleaves, nullptr, &owner));
     std::vector<PetscInt> leafD(nleaves, 0), leafO(nleaves, 0), rootD(nroots, 0), rootO(nroots, 0);
     for (const auto &s : *gd->sub) {
       const std::vector<PetscInt> cols = GDSWPhiColumns(s, kept);
       for (size_t a = 0; a < s.nodes.size(); a++) {
-        if (!interior && (*gd->sets)[s.setOf[a]].size() < 2) continue;
+        if ((*gd->sets)[s.setOf[a]].size() < 2) continue;
         const PetscInt leaf = s.leaf0 + (PetscInt)a, r = owner[leaf].rank;
         for (PetscInt c : cols)
           if (c >= 0) (c >= colRange[r] && c < colRange[r + 1] ? leafD : leafO)[leaf]++;
@@ -178,25 +179,28 @@ static PetscErrorCode AssembleAPhi(PC pc, bool interior, const std::vector<Petsc
     std::vector<PetscInt> dnz(nroots * bs), onz(nroots * bs);
     for (PetscInt a = 0; a < nroots; a++)
       for (PetscInt c = 0; c < bs; c++) dnz[a * bs + c] = std::min(rootD[a], n), onz[a * bs + c] = std::min(rootO[a], N - n);
-    PetscCall(MatCreate(PetscObjectComm((PetscObject)pc), &gd->APhi));
-    PetscCall(MatSetType(gd->APhi, MATAIJ));
-    PetscCall(MatSetSizes(gd->APhi, m, n, M, N));
-    PetscCall(MatXAIJSetPreallocation(gd->APhi, 1, dnz.data(), onz.data(), nullptr, nullptr));
-    gd->aPhiInterior = (PetscBool)interior;
-  } else PetscCall(MatZeroEntries(gd->APhi));
+    PetscCall(MatCreate(PetscObjectComm((PetscObject)pc), &gd->APhiGamma));
+    PetscCall(MatSetType(gd->APhiGamma, MATAIJ));
+    PetscCall(MatSetSizes(gd->APhiGamma, m, n, M, N));
+    PetscCall(MatXAIJSetPreallocation(gd->APhiGamma, 1, dnz.data(), onz.data(), nullptr, nullptr));
+  } else PetscCall(MatZeroEntries(gd->APhiGamma));
   for (size_t i = 0; i < gd->sub->size(); i++) {
-    const Subdomain            &s    = (*gd->sub)[i];
+    Subdomain                  &s    = (*gd->sub)[i];
     const std::vector<PetscInt> cols = GDSWPhiColumns(s, kept);
     std::vector<PetscInt>       rows;
+    s.WI = std::move(R[i]);
     if (cols.empty()) continue;
     PetscCall(GDSWGlobalRows(pc, s, s.isG, rows));
-    PetscCall(MatSetValues(gd->APhi, (PetscInt)rows.size(), rows.data(), (PetscInt)cols.size(), cols.data(), C[i].data(), ADD_VALUES));
-    if (R[i].empty()) continue;
-    PetscCall(GDSWGlobalRows(pc, s, s.isI, rows));
-    PetscCall(MatSetValues(gd->APhi, (PetscInt)rows.size(), rows.data(), (PetscInt)cols.size(), cols.data(), R[i].data(), ADD_VALUES));
+    PetscCall(MatSetValues(gd->APhiGamma, (PetscInt)rows.size(), rows.data(), (PetscInt)cols.size(), cols.data(), C[i].data(), ADD_VALUES));
   }
-  PetscCall(MatAssemblyBegin(gd->APhi, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(gd->APhi, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyBegin(gd->APhiGamma, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(gd->APhiGamma, MAT_FINAL_ASSEMBLY));
+  if (interior) PetscCall(GDSWCreateAPhiOperator(pc));
+  else {
+    PetscCall(MatDestroy(&gd->APhi));
+    PetscCall(PetscObjectReference((PetscObject)gd->APhiGamma));
+    gd->APhi = gd->APhiGamma;
+  }
   PetscFunctionReturn(0);
 }
 

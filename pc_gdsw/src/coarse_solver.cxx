@@ -97,7 +97,8 @@ PetscErrorCode GDSWApplyCoarse(PC pc, Vec x, Vec y, PetscBool transpose)
      y = Q0 x + (I - Q0 A) M1 (I - A Q0) x,  Q0 = Phi A_0^{-1} Phi^T,
    so that M A Phi = Phi: the coarse space is solved exactly and the local solves see only the
    rest. With W = A Phi kept from the set-up it costs what the additive one does (one product
-   with Phi^T and one with Phi) plus two with W, which is sparse (interface rows only):
+   with Phi^T and one with Phi) plus two with W: sparse (interface rows only) where Phi is harmonic
+   for A, else with interior rows as dense as Phi's (phi.cxx):
      c = A_0^{-1} Phi^T x,  y = M1 (x - W c),  y += Phi (c - A_0^{-1} W^T y).
    For a nonsymmetric A the product with (A^T Phi) or its transpose goes through A. Transposed,
    y = Q0^T x + (I - Q0^T A^T) M1^T (I - A^T Q0^T) x. */

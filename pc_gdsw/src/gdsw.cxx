@@ -116,6 +116,7 @@ static PetscErrorCode PCReset_GDSW(PC pc)
   PetscCall(ISDestroy(&gd->keptCols));
   PetscCall(MatDestroy(&gd->A0));
   PetscCall(MatDestroy(&gd->APhi));
+  PetscCall(MatDestroy(&gd->APhiGamma));
   PetscCall(KSPDestroy(&gd->coarseKsp));
   PetscCall(VecDestroy(&gd->r0));
   PetscCall(VecDestroy(&gd->x0));

@@ -64,6 +64,7 @@ struct Subdomain {
   Mat AII = nullptr, AIG = nullptr;
   IS  isI = nullptr, isG = nullptr;     /* local dofs of Omega~_i: interior / interface */
   Mat PhiG = nullptr, PhiI = nullptr;   /* dense: interface values, harmonic extension */
+  std::vector<PetscScalar> WI;          /* (A Phi)_I, nI x ncols row-major, where Phi is not harmonic for A and W is used */
   /* first level */
   Mat Aovl = nullptr;                   /* A(Omega_i^delta, Omega_i^delta) */
   KSP ksp = nullptr;
@@ -125,9 +126,9 @@ typedef struct {
   VecScatter phiCols, phiInterior;        /* coarse vector -> the subdomains' columns; global -> their interior rows */
   Vec phiColsWork, phiIntWork;
   PetscInt nColsFull, nColsFullLocal;     /* Phi's columns before dropping zero ones (global, this rank's) */
-  Mat APhi;                               /* W = A Phi, for the balanced combination */
+  Mat APhiGamma;                          /* W's interface rows (AIJ) */
+  Mat APhi;                               /* W = A Phi, for the balanced combination: APhiGamma, or the operator of phi.cxx with (A Phi)_I */
   PetscBool exactExtension;               /* every interior solve of the last extension was a direct factorisation */
-  PetscBool aPhiInterior;                 /* W has room for the interior rows of A Phi (a basis not harmonic for A) */
   IS  keptCols;
   KSP coarseKsp;
   Vec r0, x0, c0;                         /* coarse work (c0: the balanced combination's first correction) */
@@ -152,6 +153,7 @@ PETSC_INTERN PetscErrorCode GDSWBuildCoarseBasis(PC);
 PETSC_INTERN PetscErrorCode GDSWUpdateCoarseBasis(PC);
 PETSC_INTERN PetscErrorCode GDSWAssemblePhiMatrix(PC);
 PETSC_INTERN PetscErrorCode GDSWCreatePhiOperator(PC);
+PETSC_INTERN PetscErrorCode GDSWCreateAPhiOperator(PC);
 /* Phi's numbering: a subdomain's columns (through kept, see GDSWKeptColumns(); -1 where dropped),
    the global rows of its local dofs, and kept[j], the place of column j among the kept ones */
 PETSC_INTERN std::vector<PetscInt> GDSWPhiColumns(const gdsw::Subdomain &, const std::vector<PetscInt> &);

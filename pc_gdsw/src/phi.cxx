@@ -7,7 +7,10 @@
    Interior rows are disjoint between subdomains, so
      Phi x   = PhiGamma x   + sum_i R_I_i^T Phi_I_i x(cols_i),
      Phi^T r = PhiGamma^T r + sum_i R_cols_i^T Phi_I_i^T r(I_i).
-   The assembled matrix is made only when asked for (PCGDSWGetCoarseBasis()). */
+   W = A Phi of a basis that is not harmonic for A (kept, or extended inexactly) has interior rows
+   as dense as Phi's: the same operator with APhiGamma and the blocks (A Phi)_I of the coarse
+   operator's set-up, through the same scatters. The assembled Phi is made only when asked for
+   (PCGDSWGetCoarseBasis()). */
 #include "gdswimpl.h"
 #include <petscblaslapack.h>
 
@@ -64,8 +67,9 @@ static PetscInt NumColumns(const Subdomain &s)
   return n;
 }
 
-/* Between the work vectors: interior = Phi_I cols, or cols = Phi_I^T interior, per subdomain. */
-static PetscErrorCode InteriorBlocks(PC pc, bool transpose)
+/* Between the work vectors: interior = B_i cols, or cols = B_i^T interior, per subdomain, where B_i
+   is Phi_I (dense, column-major) or, for W, (A Phi)_I (nI x ncols, row-major). */
+static PetscErrorCode InteriorBlocks(PC pc, bool w, bool transpose)
 {
   PC_GDSW          *gd = (PC_GDSW *)pc->data;
   PetscScalar      *cols, *in;
@@ -77,19 +81,20 @@ static PetscErrorCode InteriorBlocks(PC pc, bool transpose)
   PetscCall(VecGetArray(gd->phiColsWork, &cols));
   PetscCall(VecGetArray(gd->phiIntWork, &in));
   for (const auto &s : *gd->sub) {
-    if (!s.PhiI) continue;
-    const PetscScalar *phi;
+    if (!s.PhiI || (w && s.WI.empty())) continue;
+    const PetscScalar *B;
     PetscInt           nI, ncols, lda;
     PetscBLASInt       m, n, ld;
     PetscCall(MatGetSize(s.PhiI, &nI, &ncols));
     PetscCall(MatDenseGetLDA(s.PhiI, &lda));
+    if (w) B = s.WI.data(), lda = ncols, std::swap(nI, ncols); /* row-major: the column-major ncols x nI B_i^T */
+    else PetscCall(MatDenseGetArrayRead(s.PhiI, &B));
     PetscCall(PetscBLASIntCast(nI, &m));
     PetscCall(PetscBLASIntCast(ncols, &n));
     PetscCall(PetscBLASIntCast(lda, &ld));
-    PetscCall(MatDenseGetArrayRead(s.PhiI, &phi));
-    if (transpose) PetscCallBLAS("BLASgemv", BLASgemv_("T", &m, &n, &one, phi, &ld, in + s.intOffset, &inc, &zero, cols + s.colOffset, &inc));
-    else PetscCallBLAS("BLASgemv", BLASgemv_("N", &m, &n, &one, phi, &ld, cols + s.colOffset, &inc, &zero, in + s.intOffset, &inc));
-    PetscCall(MatDenseRestoreArrayRead(s.PhiI, &phi));
+    PetscScalar *src = transpose ? in + s.intOffset : cols + s.colOffset, *dst = transpose ? cols + s.colOffset : in + s.intOffset;
+    PetscCallBLAS("BLASgemv", BLASgemv_(transpose != w ? "T" : "N", &m, &n, &one, B, &ld, src, &inc, &zero, dst, &inc));
+    if (!w) PetscCall(MatDenseRestoreArrayRead(s.PhiI, &B));
     flops += 2.0 * nI * ncols;
   }
   PetscCall(VecRestoreArray(gd->phiIntWork, &in));
@@ -98,9 +103,9 @@ static PetscErrorCode InteriorBlocks(PC pc, bool transpose)
   PetscFunctionReturn(0);
 }
 
-/* z = y + Phi x, or y + Phi^T x (y may be null): the interface rows' product, then the interior
-   blocks between a scatter in (the subdomains' columns, or their interior rows) and a scatter out
-   adding to z (the other way round). */
+/* z = y + P x, or y + P^T x (y may be null), P = Phi or W: the interface rows' product, then the
+   interior blocks between a scatter in (the subdomains' columns, or their interior rows) and a
+   scatter out adding to z (the other way round). */
 static PetscErrorCode Apply(Mat P, Vec x, Vec y, Vec z, bool transpose)
 {
   PC       pc;
@@ -109,14 +114,17 @@ static PetscErrorCode Apply(Mat P, Vec x, Vec y, Vec z, bool transpose)
   PetscFunctionBegin;
   PetscCall(MatShellGetContext(P, &pc));
   gd = (PC_GDSW *)pc->data;
-  if (transpose) PetscCall(y ? MatMultTransposeAdd(gd->PhiGamma, x, y, z) : MatMultTranspose(gd->PhiGamma, x, z));
-  else PetscCall(y ? MatMultAdd(gd->PhiGamma, x, y, z) : MatMult(gd->PhiGamma, x, z));
+  const bool w     = P != gd->Phi;
+  Mat        Gamma = w ? gd->APhiGamma : gd->PhiGamma;
+  if (transpose) PetscCall(y ? MatMultTransposeAdd(Gamma, x, y, z) : MatMultTranspose(Gamma, x, z));
+  else PetscCall(y ? MatMultAdd(Gamma, x, y, z) : MatMult(Gamma, x, z));
   VecScatter in = transpose ? gd->phiInterior : gd->phiCols, out = transpose ? gd->phiCols : gd->phiInterior;
   Vec        inWork = transpose ? gd->phiIntWork : gd->phiColsWork, outWork = transpose ? gd->phiColsWork : gd->phiIntWork;
-  PetscCall(VecSet(gd->phiColsWork, 0.0)); /* dropped columns and subdomains without interior are never written */
+  PetscCall(VecSet(inWork, 0.0)); /* dropped columns and subdomains without a block are never written */
+  PetscCall(VecSet(outWork, 0.0));
   PetscCall(VecScatterBegin(in, x, inWork, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(in, x, inWork, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(InteriorBlocks(pc, transpose));
+  PetscCall(InteriorBlocks(pc, w, transpose));
   PetscCall(VecScatterBegin(out, outWork, z, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecScatterEnd(out, outWork, z, ADD_VALUES, SCATTER_REVERSE));
   PetscFunctionReturn(0);
@@ -150,11 +158,38 @@ static PetscErrorCode PhiMultTransposeAdd(Mat P, Vec x, Vec y, Vec z)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode CreateShell(PC pc, Mat *P)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+  PetscInt m, n, M, N;
+
+  PetscFunctionBegin;
+  PetscCall(MatGetLocalSize(gd->PhiGamma, &m, &n));
+  PetscCall(MatGetSize(gd->PhiGamma, &M, &N));
+  PetscCall(MatCreateShell(PetscObjectComm((PetscObject)pc), m, n, M, N, pc, P));
+  PetscCall(MatShellSetOperation(*P, MATOP_MULT, (void (*)(void))PhiMult));
+  PetscCall(MatShellSetOperation(*P, MATOP_MULT_ADD, (void (*)(void))PhiMultAdd));
+  PetscCall(MatShellSetOperation(*P, MATOP_MULT_TRANSPOSE, (void (*)(void))PhiMultTranspose));
+  PetscCall(MatShellSetOperation(*P, MATOP_MULT_TRANSPOSE_ADD, (void (*)(void))PhiMultTransposeAdd));
+  PetscFunctionReturn(0);
+}
+
+/* W = APhiGamma + the subdomains' blocks (A Phi)_I, after GDSWCreatePhiOperator() */
+PetscErrorCode GDSWCreateAPhiOperator(PC pc)
+{
+  PC_GDSW *gd = (PC_GDSW *)pc->data;
+
+  PetscFunctionBegin;
+  PetscCall(MatDestroy(&gd->APhi));
+  PetscCall(CreateShell(pc, &gd->APhi));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode GDSWCreatePhiOperator(PC pc)
 {
   PC_GDSW              *gd = (PC_GDSW *)pc->data;
   std::vector<PetscInt> kept, rows, from, to;
-  PetscInt              nI = 0, nc = 0, m, n, M, N;
+  PetscInt              nI = 0, nc = 0;
   Vec                   coarse, global;
   IS                    isRows, isFrom, isTo;
 
@@ -186,12 +221,6 @@ PetscErrorCode GDSWCreatePhiOperator(PC pc)
   PetscCall(ISDestroy(&isTo));
   PetscCall(VecDestroy(&coarse));
   PetscCall(VecDestroy(&global));
-  PetscCall(MatGetLocalSize(gd->PhiGamma, &m, &n));
-  PetscCall(MatGetSize(gd->PhiGamma, &M, &N));
-  PetscCall(MatCreateShell(PetscObjectComm((PetscObject)pc), m, n, M, N, pc, &gd->Phi));
-  PetscCall(MatShellSetOperation(gd->Phi, MATOP_MULT, (void (*)(void))PhiMult));
-  PetscCall(MatShellSetOperation(gd->Phi, MATOP_MULT_ADD, (void (*)(void))PhiMultAdd));
-  PetscCall(MatShellSetOperation(gd->Phi, MATOP_MULT_TRANSPOSE, (void (*)(void))PhiMultTranspose));
-  PetscCall(MatShellSetOperation(gd->Phi, MATOP_MULT_TRANSPOSE_ADD, (void (*)(void))PhiMultTransposeAdd));
+  PetscCall(CreateShell(pc, &gd->Phi));
   PetscFunctionReturn(0);
 }
