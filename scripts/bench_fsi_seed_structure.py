@@ -7,12 +7,12 @@ Per run: Newton steps, GMRES per Newton step, seconds (step, assembly, the struc
 its applications = the GDSWApply event, the rest), peak memory. Each run takes 4-5 minutes and
 18 GiB on 2 ranks. Writes bench/results/fsi_seed_structure.{csv,cmd} and each run's -log_view
 (fsi_seed_structure_K.log_view.txt).
-With --against DIR (a built checkout of an earlier commit, meshes/tube1_seed_fsi.msh in it) it
-runs the scene's variant from DIR and from here alternately, --pairs N times (default 3), each
-with its own fsi_app and scenes, and writes bench/results/fsi_seed_share_ab.{csv,cmd} with the
-medians: the structure's share against the code of that commit, settled over the machine's
-fast and slow phases.
-Usage: scripts/bench_fsi_seed_structure.py [--only NAME,...] [--against DIR [--pairs N]]"""
+With --repeat N it runs the scene's variant N times and writes
+bench/results/fsi_seed_share_ab.{csv,cmd} with each run and the medians, which settle the
+structure's share over the machine's fast and slow phases; with --against DIR (a built checkout
+of an earlier commit, meshes/tube1_seed_fsi.msh in it) each of the N rounds also runs that
+commit's fsi_app with its scenes, alternating which goes first.
+Usage: scripts/bench_fsi_seed_structure.py [--only NAME,...] | --repeat N [--against DIR]"""
 import os
 import re
 import statistics
@@ -46,37 +46,40 @@ def measure(cmd, report, log):
     return row
 
 
-def against(base_dir, pairs):
-    """Alternating pairs, the earlier commit's run first in odd pairs, second in even ones."""
-    commit = subprocess.run(["git", "-C", base_dir, "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
-    here = subprocess.run(["git", "-C", TOP, "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
+def repeat(rounds, base_dir=None):
+    """The scene's variant `rounds` times (alternating with base_dir's commit if given), then the medians."""
+    def commit(d):
+        return subprocess.run(["git", "-C", d, "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
     opts = list(VARIANTS.values())[0]
-    sides = {commit: (base_dir, BASE.replace(TOP, base_dir)), here: (TOP, BASE)}
+    sides = {commit(TOP): (TOP, BASE)}
+    if base_dir:
+        sides = {commit(base_dir): (base_dir, BASE.replace(TOP, base_dir)), **sides}
     load, rows, cmds, tmp = loadavg(), [], [], tempfile.mkdtemp()
-    for p in range(pairs):
-        for name in ([commit, here] if p % 2 == 0 else [here, commit]):
+    for p in range(rounds):
+        names = list(sides) if p % 2 == 0 else list(sides)[::-1]
+        for name in names:
             cwd, base = sides[name]
             log = os.path.join(TOP, "bench", "results", f"fsi_seed_share_ab_{len(rows)}.log_view.txt")
             os.chdir(cwd)  # the scene files are the commit's own
             row = measure(f"{base} {opts}", os.path.join(tmp, "report.json"), log)
             os.chdir(TOP)
-            row = {"pair": p + 1, "commit": name, "load": loadavg(), **(row or {"converged": 0})}
+            row = {"round": p + 1, "commit": name, "load": loadavg(), **(row or {"converged": 0})}
             print(row, flush=True)
             rows.append(row)
-            cmds.append(f"(cd {'<checkout of ' + commit + '>' if cwd != TOP else '.'} && {base.replace(cwd + '/', '')} {opts} -log_view :{log} -report report.json)")
+            where = "." if cwd == TOP else f"<checkout of {name}>"
+            cmds.append(f"(cd {where} && {base.replace(cwd + '/', '')} {opts} -log_view :{log} -report report.json)")
     for name in sides:
         mine = [r for r in rows if r["commit"] == name and r.get("converged")]
-        med = {k: round(statistics.median(r[k] for r in mine), 2) for k in mine[0] if k not in ("pair", "commit", "load", "converged")} if mine else {}
-        rows.append({"pair": "median", "commit": name, **med})
+        if mine:
+            rows.append({"round": "median", "commit": name, **{k: round(statistics.median(r[k] for r in mine), 2) for k in mine[0] if k not in ("round", "commit", "load", "converged")}})
     write_results(os.path.join(TOP, "bench", "results", "fsi_seed_share_ab"), rows, cmds,
-                  f"scripts/bench_fsi_seed_structure.py --against <checkout of {commit}> --pairs {pairs} (alternating, back to back)", load)
+                  f"scripts/bench_fsi_seed_structure.py --repeat {rounds}{' --against <checkout>' if base_dir else ''} (back to back)", load)
 
 
 def main():
-    if "--against" in sys.argv:
-        i = sys.argv.index("--against")
-        pairs = int(sys.argv[sys.argv.index("--pairs") + 1]) if "--pairs" in sys.argv else 3
-        return against(os.path.abspath(sys.argv[i + 1]), pairs)
+    if "--repeat" in sys.argv:
+        base = os.path.abspath(sys.argv[sys.argv.index("--against") + 1]) if "--against" in sys.argv else None
+        return repeat(int(sys.argv[sys.argv.index("--repeat") + 1]), base)
     if not os.path.exists(MESH):
         print(run(os.path.join(TOP, "scripts", "make-meshes") + " tube1 seed_fsi"))
     only = sys.argv[sys.argv.index("--only") + 1].split(",") if "--only" in sys.argv else None
