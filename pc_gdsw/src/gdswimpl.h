@@ -3,7 +3,7 @@
      decomposition.cxx  nonoverlapping subdomains Omega~_i and overlapping Omega_i^delta, their matrices
      interface.cxx      sharing sets, Dirichlet dofs, interface components, coarse numbering
      coarse_basis.cxx   Phi_Gamma per component, harmonic extension Phi_I, Phi's interface rows
-     phi.cxx            Phi as an operator: interface rows assembled, interior rows as dense blocks
+     phi.cxx            Phi (and W = A Phi of a basis not harmonic for A) as an operator: interface rows assembled, interior rows as dense blocks
      coarse_operator.cxx A_0 = Phi^T A Phi
      coarse_solver.cxx  the solver of A_0
      first_level.cxx    local solvers on Omega_i^delta and their restriction/prolongation
