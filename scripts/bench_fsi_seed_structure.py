@@ -77,11 +77,11 @@ def repeat(rounds, base_dir=None):
 
 
 def main():
+    if not os.path.exists(MESH):
+        print(run(os.path.join(TOP, "scripts", "make-meshes") + " tube1 seed_fsi"))
     if "--repeat" in sys.argv:
         base = os.path.abspath(sys.argv[sys.argv.index("--against") + 1]) if "--against" in sys.argv else None
         return repeat(int(sys.argv[sys.argv.index("--repeat") + 1]), base)
-    if not os.path.exists(MESH):
-        print(run(os.path.join(TOP, "scripts", "make-meshes") + " tube1 seed_fsi"))
     only = sys.argv[sys.argv.index("--only") + 1].split(",") if "--only" in sys.argv else None
     load, rows, cmds = loadavg(), [], []
     tmp = tempfile.mkdtemp()

@@ -120,8 +120,9 @@ static PetscErrorCode Apply(Mat P, Vec x, Vec y, Vec z, bool transpose)
   else PetscCall(y ? MatMultAdd(Gamma, x, y, z) : MatMult(Gamma, x, z));
   VecScatter in = transpose ? gd->phiInterior : gd->phiCols, out = transpose ? gd->phiCols : gd->phiInterior;
   Vec        inWork = transpose ? gd->phiIntWork : gd->phiColsWork, outWork = transpose ? gd->phiColsWork : gd->phiIntWork;
-  PetscCall(VecSet(inWork, 0.0)); /* dropped columns and subdomains without a block are never written */
-  PetscCall(VecSet(outWork, 0.0));
+  /* dropped columns, and subdomains without a block (or without columns: gemv then writes nothing), are never written */
+  PetscCall(VecSet(gd->phiColsWork, 0.0));
+  if (!transpose) PetscCall(VecSet(gd->phiIntWork, 0.0));
   PetscCall(VecScatterBegin(in, x, inWork, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(in, x, inWork, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(InteriorBlocks(pc, w, transpose));
