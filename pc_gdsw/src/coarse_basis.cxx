@@ -221,6 +221,25 @@ static PetscErrorCode SetUpExtension(PC pc, Subdomain &s)
   PetscFunctionReturn(0);
 }
 
+/* The positions in Omega_i^delta (rows of Aovl) of local dofs of Omega~_i. */
+static PetscErrorCode InOverlap(const Subdomain &s, IS local, IS *pos)
+{
+  PetscInt        n;
+  const PetscInt *idx, *p;
+  PetscInt       *q;
+
+  PetscFunctionBegin;
+  PetscCall(ISGetLocalSize(local, &n));
+  PetscCall(ISGetIndices(local, &idx));
+  PetscCall(ISGetIndices(s.nonInOvl, &p));
+  PetscCall(PetscMalloc1(n, &q));
+  for (PetscInt k = 0; k < n; k++) q[k] = p[idx[k]];
+  PetscCall(ISRestoreIndices(s.nonInOvl, &p));
+  PetscCall(ISRestoreIndices(local, &idx));
+  PetscCall(ISCreateGeneral(PETSC_COMM_SELF, n, q, PETSC_OWN_POINTER, pos));
+  PetscFunctionReturn(0);
+}
+
 /* Phi_I = -A_II^{-1} A_IGamma Phi_Gamma, with the current values of A. The interior solver
    lives only for this solve: its factor would otherwise sit next to the first level's through
    the whole run (the two are about the same size), and a new extension refactors anyway. */
@@ -228,6 +247,7 @@ static PetscErrorCode Extend(PC pc, Subdomain &s, MatReuse reuse)
 {
   PC_GDSW  *gd = (PC_GDSW *)pc->data;
   PetscInt  nI, ncols;
+  IS        rowsI, colsG;
   Mat       B;
   KSP       ksp;
   PC        ipc;
@@ -237,8 +257,12 @@ static PetscErrorCode Extend(PC pc, Subdomain &s, MatReuse reuse)
   PetscCall(ISGetLocalSize(s.isI, &nI));
   PetscCall(MatGetSize(s.PhiG, nullptr, &ncols));
   if (!nI || !ncols) PetscFunctionReturn(0);
-  PetscCall(GDSWSubmatrix(s.Anon, s.isI, s.isI, 1, reuse, &s.AII));
-  PetscCall(GDSWSubmatrix(s.Anon, s.isI, s.isG, 1, reuse, &s.AIG));
+  PetscCall(InOverlap(s, s.isI, &rowsI));
+  PetscCall(InOverlap(s, s.isG, &colsG));
+  PetscCall(GDSWSubmatrix(s.Aovl, rowsI, rowsI, 1, reuse, &s.AII));
+  PetscCall(GDSWSubmatrix(s.Aovl, rowsI, colsG, 1, reuse, &s.AIG));
+  PetscCall(ISDestroy(&rowsI));
+  PetscCall(ISDestroy(&colsG));
   PetscCall(MatMatMult(s.AIG, s.PhiG, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &B));
   PetscCall(MatScale(B, -1.0));
   if (reuse == MAT_INITIAL_MATRIX) PetscCall(MatDuplicate(B, MAT_DO_NOT_COPY_VALUES, &s.PhiI));

@@ -34,9 +34,9 @@ static PetscInt FirstCommon(const std::vector<PetscInt> &a, const std::vector<Pe
 static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, bool interior, std::vector<PetscScalar> &block, std::vector<PetscScalar> &C, std::vector<PetscScalar> &R)
 {
   PC_GDSW          *gd = (PC_GDSW *)pc->data;
-  const PetscInt    bs = gd->bs, nloc = (PetscInt)s.nodes.size() * bs;
+  const PetscInt    bs = gd->bs, novl = (PetscInt)s.ovlToNon.size();
   PetscInt          nI, nG, nrows;
-  const PetscInt   *I, *G, *ia, *ja;
+  const PetscInt   *I, *G, *ia, *ja, *pos;
   const PetscScalar *phiI = nullptr, *phiG, *va;
   PetscBool         done;
 
@@ -45,23 +45,26 @@ static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, bool
   PetscCall(ISGetLocalSize(s.isG, &nG));
   PetscCall(ISGetIndices(s.isI, &I));
   PetscCall(ISGetIndices(s.isG, &G));
-  std::vector<PetscInt> where(nloc, -1); /* local dof -> interior index, or -(Gamma index)-2 */
-  for (PetscInt r = 0; r < nI; r++) where[I[r]] = r;
-  for (PetscInt r = 0; r < nG; r++) where[G[r]] = -r - 2;
+  /* the rows of Omega~_i's dofs in Aovl; where: dof of Omega_i^delta -> interior index, or
+     -(Gamma index)-2, or -1 (a Dirichlet dof, or outside Omega~_i) */
+  PetscCall(ISGetIndices(s.nonInOvl, &pos));
+  std::vector<PetscInt> where(novl, -1);
+  for (PetscInt r = 0; r < nI; r++) where[pos[I[r]]] = r;
+  for (PetscInt r = 0; r < nG; r++) where[pos[G[r]]] = -r - 2;
   if (nI) PetscCall(MatDenseGetArrayRead(s.PhiI, &phiI));
   PetscCall(MatDenseGetArrayRead(s.PhiG, &phiG));
-  PetscCall(MatGetRowIJ(s.Anon, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
-  PetscCall(MatSeqAIJGetArrayRead(s.Anon, &va));
+  PetscCall(MatGetRowIJ(s.Aovl, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
+  PetscCall(MatSeqAIJGetArrayRead(s.Aovl, &va));
   /* the couplings of each Gamma row that enter C, as (value, row of Phi_I or Phi_Gamma) */
   std::vector<PetscInt>    ptr(nG + 1, 0), src; /* row of [Phi_I; Phi_Gamma] */
   std::vector<PetscScalar> val;
   for (PetscInt r = 0; r < nG; r++) {
     const PetscInt row = G[r];
     const auto    &Sr  = (*gd->sets)[s.setOf[row / bs]];
-    for (PetscInt k = ia[row]; k < ia[row + 1]; k++) {
+    for (PetscInt k = ia[pos[row]]; k < ia[pos[row] + 1]; k++) {
       const PetscInt w = where[ja[k]];
       if (w >= 0) val.push_back(va[k]), src.push_back(w);
-      else if (w <= -2 && FirstCommon(Sr, (*gd->sets)[s.setOf[ja[k] / bs]]) == s.gid) val.push_back(va[k]), src.push_back(nI - w - 2);
+      else if (w <= -2 && FirstCommon(Sr, (*gd->sets)[s.setOf[s.ovlToNon[ja[k]] / bs]]) == s.gid) val.push_back(va[k]), src.push_back(nI - w - 2);
     }
     ptr[r + 1] = (PetscInt)val.size();
   }
@@ -88,7 +91,7 @@ static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, bool
     PetscLogDouble flops = 0;
     for (PetscInt r = 0; r < nI; r++) {
       PetscScalar *rr = &R[r * ncols];
-      for (PetscInt k = ia[I[r]]; k < ia[I[r] + 1]; k++) {
+      for (PetscInt k = ia[pos[I[r]]]; k < ia[pos[I[r]] + 1]; k++) {
         const PetscInt w = where[ja[k]];
         if (w == -1) continue; /* a Dirichlet dof: Phi vanishes there */
         const PetscScalar *x = &X[(w >= 0 ? w : nI - w - 2) * ncols];
@@ -99,8 +102,9 @@ static PetscErrorCode LocalBlock(PC pc, const Subdomain &s, PetscInt ncols, bool
     }
     PetscCall(PetscLogFlops(flops));
   }
-  PetscCall(MatSeqAIJRestoreArrayRead(s.Anon, &va));
-  PetscCall(MatRestoreRowIJ(s.Anon, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
+  PetscCall(MatSeqAIJRestoreArrayRead(s.Aovl, &va));
+  PetscCall(MatRestoreRowIJ(s.Aovl, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
+  PetscCall(ISRestoreIndices(s.nonInOvl, &pos));
   block.assign(ncols * ncols, 0.0);
   PetscBLASInt m, n, kk;
   PetscCall(PetscBLASIntCast(ncols, &m));

@@ -58,9 +58,9 @@ struct Subdomain {
   std::vector<PetscInt> dirMask;        /* per node: bit c set if dof c is a Dirichlet dof */
   std::vector<PetscReal> nodeData;      /* per node: coordinates (dim) or null-space rows (nz*bs) */
   std::vector<CoarseGroup> groups;
-  /* harmonic extension */
-  Mat Anon = nullptr;                   /* A(Omega~_i, Omega~_i), a submatrix of Aovl */
+  /* harmonic extension: A(Omega~_i, Omega~_i) is read in Aovl's rows, not copied */
   IS  nonInOvl = nullptr;               /* positions of Omega~_i's dofs within Omega_i^delta */
+  std::vector<PetscInt> ovlToNon;       /* per dof of Omega_i^delta: its dof of Omega~_i, or -1 */
   Mat AII = nullptr, AIG = nullptr;
   IS  isI = nullptr, isG = nullptr;     /* local dofs of Omega~_i: interior / interface */
   Mat PhiG = nullptr, PhiI = nullptr;   /* dense: interface values, harmonic extension */

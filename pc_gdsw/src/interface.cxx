@@ -117,15 +117,16 @@ static PetscErrorCode FindComponents(PC pc, Subdomain &s, std::vector<CoarseGrou
 {
   PC_GDSW        *gd = (PC_GDSW *)pc->data;
   const PetscInt  bs = gd->bs, nn = (PetscInt)s.nodes.size(), full = (1 << bs) - 1;
-  const PetscInt *ia, *ja;
+  const PetscInt *ia, *ja, *pos;
   PetscInt        nrows;
   PetscBool       done;
 
   PetscFunctionBegin;
   std::vector<char> onGamma(nn);
   for (PetscInt a = 0; a < nn; a++) onGamma[a] = (*gd->sets)[s.setOf[a]].size() >= 2 && s.dirMask[a] != full;
-  PetscCall(MatGetRowIJ(s.Anon, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
+  PetscCall(MatGetRowIJ(s.Aovl, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
   PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_SUP, "PCGDSW: cannot access the rows of a subdomain matrix");
+  PetscCall(ISGetIndices(s.nonInOvl, &pos)); /* the rows of Omega~_i's dofs in Aovl */
   std::vector<char>     seen(nn, 0);
   std::vector<PetscInt> stack;
   for (PetscInt a = 0; a < nn; a++) {
@@ -139,8 +140,10 @@ static PetscErrorCode FindComponents(PC pc, Subdomain &s, std::vector<CoarseGrou
       stack.pop_back();
       c.support.push_back(b);
       for (PetscInt r = b * bs; r < (b + 1) * bs; r++)
-        for (PetscInt k = ia[r]; k < ia[r + 1]; k++) {
-          const PetscInt m = ja[k] / bs;
+        for (PetscInt k = ia[pos[r]]; k < ia[pos[r] + 1]; k++) {
+          const PetscInt d = s.ovlToNon[ja[k]];
+          if (d < 0) continue; /* outside Omega~_i */
+          const PetscInt m = d / bs;
           if (!seen[m] && onGamma[m] && s.setOf[m] == s.setOf[a]) {
             seen[m] = 1;
             stack.push_back(m);
@@ -159,7 +162,8 @@ static PetscErrorCode FindComponents(PC pc, Subdomain &s, std::vector<CoarseGrou
     c.ncols = 0, c.col0 = -1;
     comps.push_back(c);
   }
-  PetscCall(MatRestoreRowIJ(s.Anon, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
+  PetscCall(ISRestoreIndices(s.nonInOvl, &pos));
+  PetscCall(MatRestoreRowIJ(s.Aovl, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
   PetscFunctionReturn(0);
 }
 
