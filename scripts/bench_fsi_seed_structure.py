@@ -34,9 +34,10 @@ VARIANTS = {
 }
 
 
-def measure(cmd, report, log):
-    """One run's step costs and the structure's applications (the GDSWApply event), or None."""
-    r = run_report(f"{cmd} -log_view :{log} -report {report}", report)
+def measure(cmd, report, log, cwd=TOP):
+    """One run's step costs and the structure's applications (the GDSWApply event), or None; run
+    in cwd, whose scene files it reads."""
+    r = run_report(f"{cmd} -log_view :{log} -report {report}", report, cwd=cwd)
     if r is None:
         return None
     row = step_costs(r)
@@ -60,9 +61,7 @@ def repeat(rounds, base_dir=None):
         for name in names:
             cwd, base = sides[name]
             log = os.path.join(TOP, "bench", "results", f"fsi_seed_share_ab_{len(rows)}.log_view.txt")
-            os.chdir(cwd)  # the scene files are the commit's own
-            row = measure(f"{base} {opts}", os.path.join(tmp, "report.json"), log)
-            os.chdir(TOP)
+            row = measure(f"{base} {opts}", os.path.join(tmp, "report.json"), log, cwd)  # the commit's own scene files
             row = {"round": p + 1, "commit": name, "load": loadavg(), **(row or {"converged": 0})}
             print(row, flush=True)
             rows.append(row)

@@ -15,11 +15,12 @@ ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIR
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # scenes name their files from here
 
 
-def run(cmd, timeout=None):
-    """Output (stdout and stderr) of a command line. After `timeout` seconds the command's process
-    group (mpiexec and its ranks) is ended and the output ends with "benchlib: TIMEOUT"."""
+def run(cmd, timeout=None, cwd=TOP):
+    """Output (stdout and stderr) of a command line, run in cwd (the repository's root unless
+    given). After `timeout` seconds the command's process group (mpiexec and its ranks) is ended
+    and the output ends with "benchlib: TIMEOUT"."""
     p = subprocess.Popen(cmd.split(), env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                         start_new_session=True, cwd=TOP)
+                         start_new_session=True, cwd=cwd)
     try:
         return p.communicate(timeout=timeout)[0]
     except subprocess.TimeoutExpired:
@@ -111,12 +112,12 @@ def write_results(out, rows, cmds, producer, load_at_start=None):
         f.write(f"# produced by {producer}; run from the repository root\n" + "\n".join(portable(c) for c in cmds) + "\n")
 
 
-def run_report(cmd, report, timeout=None):
-    """The JSON run report of an fsi_app command line (which writes it to `report`), None if the
-    run wrote none (its output's tail is printed)."""
+def run_report(cmd, report, timeout=None, cwd=TOP):
+    """The JSON run report of an fsi_app command line run in cwd (which writes it to `report`),
+    None if the run wrote none (its output's tail is printed)."""
     if os.path.exists(report):
         os.remove(report)
-    log = run(cmd, timeout=timeout)
+    log = run(cmd, timeout=timeout, cwd=cwd)
     if not os.path.exists(report):
         print(log[-1500:])
         return None
