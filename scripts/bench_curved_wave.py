@@ -11,7 +11,9 @@ Writes bench/results/fsi_curved_wave.{csv,cmd}. Usage: scripts/bench_curved_wave
 import os
 import tempfile
 
-from benchlib import TOP, loadavg, run_report, write_results
+from benchlib import TOP, check_command_line, loadavg, run_report, write_results
+
+check_command_line(__doc__)
 
 APP = os.path.join(TOP, "install", "bin", "fsi_app")
 Z = (0.625, 1.25, 1.875)

@@ -15,7 +15,9 @@ import subprocess
 import sys
 import tempfile
 
-from benchlib import ENV, TOP, loadavg, write_results
+from benchlib import ENV, TOP, check_command_line, loadavg, write_results
+
+check_command_line(__doc__, valued=("--app",), flags=("--plot",))
 
 Z = (0.625, 1.25, 1.875)
 RI = 0.15  # tube #1's inner radius (scripts/make-meshes)

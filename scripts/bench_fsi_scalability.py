@@ -17,13 +17,22 @@ import os
 import sys
 import tempfile
 
-from benchlib import TOP, loadavg, run, run_report, step_costs, write_results
+from benchlib import TOP, check_command_line, loadavg, run, run_report, step_costs, write_results
+
+check_command_line(__doc__, valued=("--tubes", "--mesh", "--dt", "--subdomains", "--overlap", "--ranks", "--steps", "--out"), flags=("--plot",))
 
 APP = os.path.join(os.environ.get("GDSW_BUILD", os.path.join(TOP, "build")), "fsi_app", "fsi_app")
 
 
 def arg(name, default):
     return sys.argv[sys.argv.index(name) + 1] if name in sys.argv else default
+
+
+def command(tube, mesh, dt, ranks, subdomains, overlap, steps, report):
+    return (f"mpiexec -n {ranks} --mca mpi_yield_when_idle 1 {APP} -options_file scenes/fsi_tube{tube}_linear.opts "
+            f"-options_file scenes/fsi_facsi.opts -mesh {os.path.join(TOP, 'meshes', mesh + '.msh')} -dt {dt} "
+            f"-t_final {steps * float(dt):g} -structure_subdomains {subdomains // ranks} "
+            f"-fieldsplit_structure_pc_gdsw_overlap {overlap} -report {report}")
 
 
 def main():
@@ -39,25 +48,31 @@ def main():
     bad = [s for s in counts if s % ranks]
     if bad:
         sys.exit(f"bench_fsi_scalability: --subdomains {bad} are not multiples of --ranks {ranks}")
-    rows, cmds, load = [], [], loadavg()
+    # rows are kept across calls: a point already in out.csv is not run again (delete its row to
+    # repeat it), so a long sweep can be stopped and resumed
+    rows = list(csv.DictReader(open(out + ".csv"))) if os.path.exists(out + ".csv") else []
+    cmds = [command(r["tube"], r["mesh"], r["dt"], int(r["ranks"]), int(r["subdomains"]), r["overlap"], int(r.get("steps") or steps), "r.json")
+            for r in rows]
+    load = loadavg()
     for tube in tubes:
-        mesh = os.path.join(TOP, "meshes", f"tube{tube}_{level}.msh")
-        if not os.path.exists(mesh):
+        mesh = f"tube{tube}_{level}"
+        if not os.path.exists(os.path.join(TOP, "meshes", mesh + ".msh")):
             print(run(f"{os.path.join(TOP, 'scripts', 'make-meshes')} tube{tube} {level.removeprefix('L')}"))
         for dt in dts:
             for overlap in overlaps:
                 for s in counts:
+                    key = {"tube": str(tube), "mesh": mesh, "dt": dt, "ranks": str(ranks), "subdomains": str(s), "overlap": overlap}
+                    if any(all(r[k] == v for k, v in key.items()) for r in rows):
+                        continue
                     report = os.path.join(tempfile.mkdtemp(), "r.json")
-                    cmd = (f"mpiexec -n {ranks} --mca mpi_yield_when_idle 1 {APP} -options_file scenes/fsi_tube{tube}_linear.opts "
-                           f"-options_file scenes/fsi_facsi.opts -mesh {mesh} -dt {dt} -t_final {steps * float(dt):g} "
-                           f"-structure_subdomains {s // ranks} -fieldsplit_structure_pc_gdsw_overlap {overlap} -report {report}")
+                    cmd = command(tube, mesh, dt, ranks, s, overlap, steps, report)
                     r = run_report(cmd, report, timeout=7200)
-                    row = {"tube": tube, "mesh": f"tube{tube}_{level}", "dt": dt, "ranks": ranks, "subdomains": s, "overlap": overlap,
-                           **(step_costs(r) if r else {"converged": 0})}
+                    row = {**key, **(step_costs(r) if r else {"converged": 0})}
                     print(row, flush=True)
                     rows.append(row)
                     cmds.append(cmd)
-    write_results(out, rows, cmds, "scripts/bench_fsi_scalability.py " + " ".join(sys.argv[1:]), load)
+                    write_results(out, rows, cmds, "scripts/bench_fsi_scalability.py " + " ".join(sys.argv[1:]) +
+                                  " (one run per point; the rows of earlier calls kept)", load)
     plot(out)
 
 

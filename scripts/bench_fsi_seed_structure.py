@@ -20,7 +20,9 @@ import subprocess
 import sys
 import tempfile
 
-from benchlib import TOP, loadavg, run, run_report, step_costs, write_results
+from benchlib import TOP, check_command_line, loadavg, run, run_report, step_costs, write_results
+
+check_command_line(__doc__, valued=("--against", "--only", "--repeat"))
 
 APP = os.path.join(TOP, "install", "bin", "fsi_app")
 MESH = os.path.join(TOP, "meshes", "tube1_seed_fsi.msh")

@@ -15,7 +15,9 @@ import os
 import sys
 import tempfile
 
-from benchlib import loadavg, run_report, step_costs, write_results
+from benchlib import check_command_line, loadavg, run_report, step_costs, write_results
+
+check_command_line(__doc__, modes=("solvers", "setup"))
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 app = os.path.join(os.environ.get("GDSW_BUILD", os.path.join(top, "build")), "fsi_app", "fsi_app")

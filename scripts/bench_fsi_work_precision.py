@@ -36,7 +36,9 @@ import subprocess
 import sys
 import tempfile
 
-from benchlib import TOP, loadavg, run_report, write_results
+from benchlib import TOP, check_command_line, loadavg, run_report, write_results
+
+check_command_line(__doc__, valued=("--levels", "--geometry", "--schemes", "--configs"), flags=("--plot",))
 
 APP = os.path.join(TOP, "install", "bin", "fsi_app")
 OUT = os.path.join(TOP, "bench", "results", "work_precision_fsi")

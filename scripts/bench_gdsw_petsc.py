@@ -10,7 +10,9 @@ import os
 import re
 import sys
 
-from benchlib import run, write_results
+from benchlib import check_command_line, run, write_results
+
+check_command_line(__doc__, flags=("--plot", "--quick"))
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ex71 = os.path.join(top, "build", "tests", "petsc_ksp_ksp_ex71")

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
-"""Issue 3's benchmark suite: -pc_type gdsw side by side with every PETSc alternative on the
+"""The benchmark suite: -pc_type gdsw side by side with every PETSc alternative on the
 same matrices, 2 MPI ranks, CG to rtol 1e-8 (MUMPS: one direct solve).
   P1 Q1 elasticity on the unit cube (pc_gdsw/examples/elasticity.cxx), homogeneous
   P2 the same with Young's modulus jumping by 1e6 between checkerboard boxes
@@ -22,7 +22,9 @@ import math
 import os
 import sys
 
-from benchlib import measure_solve as measure, write_results
+from benchlib import check_command_line, measure_solve as measure, write_results
+
+check_command_line(__doc__, flags=("--plot", "--quick", "--sweep", "--tables"))
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 build = os.environ.get("GDSW_BUILD", os.path.join(top, "build"))

@@ -27,7 +27,9 @@ import os
 import statistics
 import sys
 
-from benchlib import loadavg, measure_solve, portable, write_results
+from benchlib import check_command_line, loadavg, measure_solve, portable, write_results
+
+check_command_line(__doc__, valued=("--only", "--repeat"), flags=("--plot", "--quick", "--hugepages"))
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 build = os.environ.get("GDSW_BUILD", os.path.join(top, "build"))

@@ -27,7 +27,9 @@ import subprocess
 import sys
 import tempfile
 
-from benchlib import run, write_results
+from benchlib import check_command_line, run, write_results
+
+check_command_line(__doc__, modes=("proxy", "seed", "ab", "tubes"), mode_args=1)
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 app = os.path.join(os.environ.get("GDSW_BUILD", os.path.join(top, "build")), "fsi_app", "fsi_app")

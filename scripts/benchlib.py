@@ -7,6 +7,7 @@ import os
 import re
 import signal
 import subprocess
+import sys
 import time
 
 # One thread per MPI rank: CHOLMOD (libgomp) otherwise starts OpenMP threads in every rank, more
@@ -138,3 +139,30 @@ def step_costs(r):
         "other_setup_per_step": (s["preconditioner_setup"] - structure) / n, "krylov_per_step": s["krylov"] / n,
         "peak_memory_mib": r["peak_memory_mib"],
     }
+
+
+def check_command_line(doc, valued=(), flags=(), modes=(), mode_args=0):
+    """Checks a script's command line before any run starts: -h or --help prints its usage (doc)
+    and exits; an option it does not take, an option without its value, or a word that is not one
+    of its modes stops it with a sentence naming what it takes. A mode may be followed by up to
+    mode_args words of its own (bench_wall.py seed 3), which the script checks."""
+    argv, name = sys.argv[1:], os.path.basename(sys.argv[0])
+    if "-h" in argv or "--help" in argv:
+        print(doc.strip())
+        sys.exit(0)
+    takes = ", ".join([f"{o} VALUE" for o in valued] + list(flags) + (["one of " + "|".join(modes)] if modes else [])) or "no arguments"
+    words, i = [], 0
+    while i < len(argv):
+        a = argv[i]
+        if a in valued:
+            if i + 1 == len(argv) or argv[i + 1].startswith("--"):
+                sys.exit(f"{name}: {a} needs a value; the script takes {takes} (--help for details)")
+            i += 2
+            continue
+        if a.startswith("-") and a not in flags:
+            sys.exit(f"{name}: unknown option {a}; the script takes {takes} (--help for details)")
+        if not a.startswith("-"):
+            words.append(a)
+        i += 1
+    if words and (words[0] not in modes or len(words) > 1 + mode_args):
+        sys.exit(f"{name}: unexpected argument '{' '.join(words)}'; the script takes {takes} (--help for details)")

@@ -428,7 +428,7 @@ def local_ordering():
     between(blocked[0] / blocked[1], 0.1, 0.55, "BAIJ LU factor nonzeros, gdsw_nodes / natural ordering")
 
 
-# ---- robustness: the hard cases of issue 3's problems 2-4, small (bounds: measured + ~20 %) ----
+# ---- robustness: the suite's hard cases (problems 2-4 of bench_gdsw_suite.py), small (bounds: measured + ~20 %) ----
 def converges_within(opts, bound, what, np=2):
     """CG (rtol 1e-8, at most 2000 iterations) converges, with no more than `bound` iterations;
     a NaN or a stall would show as DIVERGED_* and fail elasticity()'s check."""
