@@ -78,25 +78,34 @@ def main():
 
 def plot(out):
     import matplotlib
+    import matplotlib.ticker
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     rows = [r for r in csv.DictReader(open(out + ".csv")) if r["converged"] == "1"]
     meshes = list(dict.fromkeys(r["mesh"] for r in rows))
-    fig, axes = plt.subplots(1, len(meshes), figsize=(5 * len(meshes), 4), squeeze=False)
-    for ax, mesh in zip(axes[0], meshes):
+    all_ranks = sorted({r["ranks"] for r in rows}, key=lambda n: -sum(r["ranks"] == n for r in rows))  # the sweep's first
+    fig, axes = plt.subplots(2, len(meshes), figsize=(5 * len(meshes), 7), squeeze=False, sharex="col")
+    for col, mesh in enumerate(meshes):
         for dt in dict.fromkeys(r["dt"] for r in rows if r["mesh"] == mesh):
             for overlap in ("1", "2"):
-                sel = [r for r in rows if r["mesh"] == mesh and r["dt"] == dt and r["overlap"] == overlap]
-                if sel:
-                    ax.plot([int(r["subdomains"]) for r in sel], [float(r["gmres_per_newton"]) for r in sel], "o-" if overlap == "2" else "s--",
-                            label=f"dt = {float(dt) * 1e3:g} ms, overlap {overlap}")
-        ax.set_xscale("log", base=2)
-        ax.set_xlabel(f"structure subdomains ({rows[0]['ranks']} ranks)")
-        ax.set_ylabel("GMRES iterations per Newton step")
-        ax.set_title(f"FaCSI + GDSW, {mesh}, linear wall", fontsize=9)
-        ax.set_ylim(bottom=0)
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7)
+                for ranks in all_ranks:
+                    sel = sorted((r for r in rows if (r["mesh"], r["dt"], r["overlap"], r["ranks"]) == (mesh, dt, overlap, ranks)),
+                                 key=lambda r: int(r["subdomains"]))
+                    for ax, column in zip(axes[:, col], ("gmres_per_newton", "newton_per_step")):
+                        if sel:
+                            ax.plot([int(r["subdomains"]) for r in sel], [float(r[column]) for r in sel],
+                                    ("o" if overlap == "2" else "s") + ("-" if ranks == all_ranks[0] else ":"),
+                                    label=f"dt = {float(dt) * 1e3:g} ms, overlap {overlap}" + (f", {ranks} ranks" if len(all_ranks) > 1 else ""))
+        axes[0, col].set_title(f"FaCSI + GDSW, {mesh}, linear wall", fontsize=9)
+        axes[0, col].set_ylabel("GMRES iterations per Newton step")
+        axes[1, col].set_ylabel("Newton steps per time step")
+        axes[1, col].set_xlabel("structure subdomains")
+        for ax in axes[:, col]:
+            ax.set_xscale("log", base=2)
+            ax.xaxis.set_major_formatter(matplotlib.ticker.ScalarFormatter())
+            ax.set_ylim(bottom=0)
+            ax.grid(True, alpha=0.3)
+        axes[0, col].legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(out + ".png", dpi=110)
 

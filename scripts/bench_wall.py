@@ -9,6 +9,7 @@ report), with the structure preconditioned by
   kept across Newton and time steps: only A_0 and the local factors renewed), OS1 (the same subdomains, no
   coarse level), PCASM (algebraic, one block per rank, overlap 1), GAMG and ML (rigid-body modes).
 2 MPI ranks. CG for the linear law, GMRES for the others, rtol 1e-6; Newton rtol/atol 1e-8.
+Usage:
   scripts/bench_wall.py proxy [T]  tube1_L0 (12,240 dofs), every material and dt 1e-4, 5e-4, up to
                                    T (default 0.003 s): bench/results/wall_proxy.{csv,cmd}
   scripts/bench_wall.py seed [N]   tube1 at the seed's Table 1 size (357,927 dofs, made on

@@ -1649,5 +1649,31 @@ def fsi_bad_input():
         assert msg in out, (msg, out[-2000:])
         assert not re.search(r"\bnan\b", out, re.I)
 
+@case
+def bench_command_line():
+    """Every benchmark script prints its usage on --help, and stops before any run on an option or
+    a mode it does not take, or an option without its value, naming what it takes (a sweep that
+    started instead would run for hours and fail the test by its timeout)."""
+    scripts = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts")
+    def py(*args):
+        p = subprocess.run(["python3", *args], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60)
+        print("$ python3", " ".join(args), "\n" + p.stdout[-500:])
+        return p.returncode, p.stdout
+    names = sorted(f for f in os.listdir(scripts) if f.startswith("bench_") and f.endswith(".py"))
+    assert len(names) >= 12, names
+    for name in names:
+        path = os.path.join(scripts, name)
+        rc, out = py(path, "--help")
+        assert rc == 0 and "usage" in out.lower(), (name, out)
+        rc, out = py(path, "--no-such-option")
+        assert rc != 0 and ("unknown option --no-such-option" in out or "unrecognized arguments: --no-such-option" in out), (name, out)
+    for args, msg in ((["bench_fsi_scalability.py", "--tube", "2"], "unknown option --tube; the script takes --tubes VALUE"),
+                      (["bench_fsi_scalability.py", "--tubes"], "--tubes needs a value"),
+                      (["bench_wall.py", "sede"], "unexpected argument 'sede'; the script takes one of proxy|seed|ab|tubes"),
+                      (["bench_fsi_solvers.py", "setup", "3"], "unexpected argument 'setup 3'")):
+        rc, out = py(os.path.join(scripts, args[0]), *args[1:])
+        assert rc != 0 and msg in out, (args, out)
+
+
 if __name__ == "__main__":
     main("fsi")
