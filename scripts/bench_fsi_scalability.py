@@ -103,7 +103,7 @@ def plot(out):
         for ax in axes[:, col]:
             ax.set_xscale("log", base=2)
             ax.xaxis.set_major_formatter(matplotlib.ticker.ScalarFormatter())
-            ax.set_ylim(bottom=0)
+            ax.set_ylim(0, ax.get_ylim()[1] * 1.15)  # room above a flat line
             ax.grid(True, alpha=0.3)
         axes[0, col].legend(fontsize=7)
     fig.tight_layout()
