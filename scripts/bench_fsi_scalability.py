@@ -72,7 +72,7 @@ def main():
                     rows.append(row)
                     cmds.append(cmd)
                     write_results(out, rows, cmds, "scripts/bench_fsi_scalability.py " + " ".join(sys.argv[1:]) +
-                                  " (one run per point; the rows of earlier calls kept)", load)
+                                  " (one run per point; the rows of earlier calls kept)", load, keep_earlier=True)
     plot(out)
 
 

@@ -128,7 +128,7 @@ def main():
                                    peak_memory_mib=r["peak_memory_mib"], **quantities(r), commit=commit)
                         print(row, flush=True)
                         rows.append(row)
-                        write_results(OUT, rows, commands_of(rows), "scripts/bench_fsi_work_precision.py (one run each; the rows of earlier calls kept)", start)
+                        write_results(OUT, rows, commands_of(rows), "scripts/bench_fsi_work_precision.py (one run each; the rows of earlier calls kept)", start, keep_earlier=True)
     errors(rows, verbose=True)
     plot(rows)
 

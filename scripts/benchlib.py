@@ -100,17 +100,28 @@ def portable(cmd):
     return re.sub(r"/tmp/[^ ]*/([^/ ]+\.json)", r"\1", cmd)
 
 
-def write_results(out, rows, cmds, producer, load_at_start=None):
+_HEADERS = {}  # out -> the header lines this process last wrote there
+
+
+def write_results(out, rows, cmds, producer, load_at_start=None, keep_earlier=False):
     """out.csv with one row per run, out.cmd with the command of each run, to be run from the
-    repository root (and the load average at the start, if given, and now)."""
+    repository root (and the load average at the start, if given, and now). keep_earlier: the
+    rows come partly from earlier calls, so the header lines of those calls in out.cmd are kept
+    below this call's."""
     if load_at_start is not None:
         producer += f"\n# load average (1, 5, 15 min) at start: {load_at_start}, at end: {loadavg()}; CPU steal during the runs: {cpu_steal()}"
+    header = f"# produced by {producer}; run from the repository root".splitlines()
+    earlier = []
+    if keep_earlier and os.path.exists(out + ".cmd"):
+        own = _HEADERS.get(out, [])
+        earlier = [l for l in open(out + ".cmd").read().splitlines() if l.startswith("#") and l not in own]
+    _HEADERS[out] = header
     with open(out + ".csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(dict.fromkeys(k for r in rows for k in r)))  # rows of earlier calls may lack later columns
         w.writeheader()
         w.writerows(rows)
     with open(out + ".cmd", "w") as f:
-        f.write(f"# produced by {producer}; run from the repository root\n" + "\n".join(portable(c) for c in cmds) + "\n")
+        f.write("\n".join(header + earlier + [portable(c) for c in cmds]) + "\n")
 
 
 def run_report(cmd, report, timeout=None, cwd=TOP):

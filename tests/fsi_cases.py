@@ -1649,6 +1649,7 @@ def fsi_bad_input():
         assert msg in out, (msg, out[-2000:])
         assert not re.search(r"\bnan\b", out, re.I)
 
+
 @case
 def bench_command_line():
     """Every benchmark script prints its usage on --help, and stops before any run on an option or
