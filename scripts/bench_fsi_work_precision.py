@@ -28,7 +28,7 @@ Each run is one row of bench/results/work_precision_fsi.csv, with the commit it 
 scene files change); a run already there is not run again (delete its row to repeat it), so the
 grid can be filled over several calls.
 Usage: scripts/bench_fsi_work_precision.py [--levels 0,1,2] [--geometry straight,curved]
-  [--schemes backward_euler,bdf2] [--configs mumps,facsi,inexact] [--plot]"""
+  [--schemes backward_euler,bdf2] [--configs mumps,facsi,inexact] [--dts 4e-4,2e-4,1e-4] [--plot]"""
 import csv
 import math
 import os
@@ -38,7 +38,7 @@ import tempfile
 
 from benchlib import TOP, check_command_line, loadavg, run_report, write_results
 
-check_command_line(__doc__, valued=("--levels", "--geometry", "--schemes", "--configs"), flags=("--plot",))
+check_command_line(__doc__, valued=("--levels", "--geometry", "--schemes", "--configs", "--dts"), flags=("--plot",))
 
 APP = os.path.join(TOP, "install", "bin", "fsi_app")
 OUT = os.path.join(TOP, "bench", "results", "work_precision_fsi")
@@ -103,6 +103,9 @@ def commands_of(rows):
 
 
 def main():
+    dts = [float(d) for d in arg("--dts", [f"{d:g}" for d in DTS])]
+    if any(not any(math.isclose(d, D) for D in DTS) for d in dts):
+        sys.exit(f"--dts {','.join(arg('--dts', []))}: the study's steps are {', '.join(f'{d:g}' for d in DTS)} (s)")
     rows, start = load(), loadavg()
     # the scene files and the code a row was measured with (rows are kept across calls)
     git = lambda *a: subprocess.run(["git", *a], cwd=TOP, stdout=subprocess.PIPE, text=True).stdout.strip()
@@ -113,7 +116,7 @@ def main():
         for geometry in arg("--geometry", ["straight", "curved"]):
             for scheme in arg("--schemes", ["backward_euler", "bdf2"]):
                 for config in arg("--configs", list(CONFIGS)):
-                    for dt in DTS:
+                    for dt in dts:
                         key = (config, scheme, geometry, str(level), f"{dt:g}")
                         if key in done or (config == "mumps" and level > 0 and "--configs" not in sys.argv):
                             continue
