@@ -17,12 +17,15 @@ three samples around it); and the interface displacement's L2 norm in space and 
 
 Every solver configuration solves the same discrete problem to the same tolerance, so the error
 of a run is that of its (mesh, dt, scheme); the reference of each quantity, per geometry, is
-Richardson's extrapolation from BDF2's finest runs (backward Euler's, computed the same way and
-written next to it, extrapolates from outside its asymptotic range): q* = q(h2, dt3) + (q(h2, dt3) -
-q(h2, dt2)) / (2^p_t - 1) + (q(h2, dt3) - q(h1, dt3)) / ((h1/h2)^p_h - 1), with the observed orders
-p_t (at the finest level, from the three steps) and p_h (at the smallest step, from the three
-levels; h ~ fluid velocity unknowns^(-1/3), as the levels are not nested), each clipped to
-[0.5, 4]. Errors are relative to |q*| (arrivals: to the arrival time).
+Richardson's extrapolation from BDF2's runs (backward Euler's, computed the same way and written
+next to it, extrapolates from outside its asymptotic range) under the model q(h, dt) = q* + E_h(h)
++ E_t(dt): q* = q(h_c, dt_c) - E_t(dt_c) - E_h(h_c) at the finest run (the finest level, its
+smallest step). E_t(dt) = (q(dt) - q(2 dt)) / (2^p_t - 1) on the finest level run at all three
+steps, p_t observed there; E_h(h_c) = (q(h_c) - q(h_c-1)) / ((h_c-1/h_c)^p_h - 1) at the smallest
+step run on three levels, p_h observed there (h ~ fluid velocity unknowns^(-1/3), as the levels
+are not nested); orders clipped to [0.5, 4]. Where every level has every step this is the
+extrapolation from the finest level and step in both directions. Errors are relative to |q*|
+(arrivals: to the arrival time).
 
 Each run is one row of bench/results/work_precision_fsi.csv, with the commit it ran at (the
 scene files change); a run already there is not run again (delete its row to repeat it), so the
@@ -152,36 +155,40 @@ def errors(rows, verbose=False):
     for scheme in ("backward_euler", "bdf2"):
         for geometry in ("straight", "curved"):
             runs = [r for r in rows if r["scheme"] == scheme and r["geometry"] == geometry]
-            # the levels that have a run at the smallest step (a partly filled level is left out)
-            levels = sorted({int(r["level"]) for r in runs if math.isclose(float(r["dt"]), DTS[-1])})
-            if not levels:
+            if not runs:
                 continue
-            top = max(levels)
+            levels = sorted({int(r["level"]) for r in runs})
+            h = {lv: float(next(r["fluid_unknowns"] for r in runs if int(r["level"]) == lv)) ** (-1 / 3) for lv in levels}
 
             def value(level, dt, q):  # any configuration: they solve the same discrete problem
                 v = [float(r[q]) for r in runs if int(r["level"]) == level and math.isclose(float(r["dt"]), dt) and r[q] != ""]
                 return sum(v) / len(v) if v else None
 
-            h = {lv: float(next(r["fluid_unknowns"] for r in runs if int(r["level"]) == lv)) ** (-1 / 3) for lv in levels}
             for q in QUANTITIES:
-                finest = value(top, DTS[-1], q)
-                if finest is None:
+                has = lambda lv, dt: value(lv, dt, q) is not None
+                corner = next(((lv, dt) for lv in reversed(levels) for dt in reversed(DTS) if has(lv, dt)), None)
+                if corner is None:
                     continue
-                ref, row = finest, {"scheme": scheme, "geometry": geometry, "quantity": q, "finest": finest}
-                qt = [value(top, dt, q) for dt in DTS]
-                if None not in qt:
+                ref = value(*corner, q)
+                row = {"scheme": scheme, "geometry": geometry, "quantity": q, "finest": ref, "finest_level": corner[0], "finest_dt": corner[1]}
+                # the time error, from the finest level run at all three steps
+                lt = next((lv for lv in reversed(levels) if all(has(lv, dt) for dt in DTS)), None)
+                if lt is not None:
+                    qt = [value(lt, dt, q) for dt in DTS]
                     pt = observed(qt, 2.0)
-                    row["order_dt"] = pt
+                    row.update(order_dt=pt, order_dt_level=lt)
                     if pt:
-                        ref += (qt[2] - qt[1]) / (2 ** pt - 1)
-                if len(levels) >= 3:
-                    qh = [value(lv, DTS[-1], q) for lv in levels[-3:]]
-                    if None not in qh:
-                        ratio = math.sqrt(h[levels[-3]] / h[levels[-1]])  # geometric mean of the two refinements
-                        ph = observed(qh, ratio)
-                        row["order_h"] = ph
-                        if ph:
-                            ref += (qh[2] - qh[1]) / ((h[levels[-2]] / h[levels[-1]]) ** ph - 1)
+                        ref += (qt[2] - qt[1]) / (2 ** pt - 1) * (corner[1] / DTS[-1]) ** pt
+                # the space error, from the smallest step run on the three finest levels
+                top3 = levels[-3:]
+                dh = next((dt for dt in reversed(DTS) if len(top3) == 3 and all(has(lv, dt) for lv in top3)), None)
+                if dh is not None and corner[0] == top3[-1]:
+                    qh = [value(lv, dh, q) for lv in top3]
+                    ratio = math.sqrt(h[top3[0]] / h[top3[2]])  # geometric mean of the two refinements
+                    ph = observed(qh, ratio)
+                    row.update(order_h=ph, order_h_dt=dh)
+                    if ph:
+                        ref += (qh[2] - qh[1]) / ((h[top3[1]] / h[top3[2]]) ** ph - 1)
                 row["reference"] = ref
                 table.append(row)
     # both schemes converge to the same solution of the mesh: the errors of both are taken
@@ -196,7 +203,7 @@ def errors(rows, verbose=False):
             if ref and r[q] != "":
                 out.setdefault(id(r), {})[q] = abs(float(r[q]) - ref) / abs(ref)
     if table:
-        keys = ["scheme", "geometry", "quantity", "finest", "order_dt", "order_h", "reference"]
+        keys = ["scheme", "geometry", "quantity", "finest", "finest_level", "finest_dt", "order_dt", "order_dt_level", "order_h", "order_h_dt", "reference"]
         with open(OUT + "_orders.csv", "w", newline="") as f:
             w = csv.DictWriter(f, fieldnames=keys)
             w.writeheader()

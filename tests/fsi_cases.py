@@ -2,6 +2,8 @@
 # SPDX-License-Identifier: BSD-2-Clause
 """ctest cases for fsi_app: each runs programs and asserts numbers or messages from their output."""
 import cmath
+import csv
+import importlib.util
 import json
 import math
 import os
@@ -10,6 +12,7 @@ import shutil
 import socket
 import stat
 import subprocess
+import sys
 import tempfile
 
 from testlib import BUILD, between, case, main, run
@@ -1674,6 +1677,44 @@ def bench_command_line():
                       (["bench_fsi_solvers.py", "setup", "3"], "unexpected argument 'setup 3'")):
         rc, out = py(os.path.join(scripts, args[0]), *args[1:])
         assert rc != 0 and msg in out, (args, out)
+
+
+@case
+def work_precision_reference():
+    """The coupled study's reference (scripts/bench_fsi_work_precision.py) on rows made from
+    q(h, dt) = q* + a h^2 + b dt^3 (h halving per level): Richardson's extrapolation recovers q*
+    and the orders 2 and 3, from the full grid and from a finest level run only at the two larger
+    steps (the time error then comes from the level below)."""
+    scripts = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts")
+    sys.path.insert(0, scripts)
+    argv, sys.argv = sys.argv, [sys.argv[0]]
+    spec = importlib.util.spec_from_file_location("work_precision", os.path.join(scripts, "bench_fsi_work_precision.py"))
+    wp = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(wp)
+    sys.argv = argv
+    exact, a, b = 1.5e-4, 3.0e-3, -2.0e6
+    unknowns = {0: 1000, 1: 8000, 2: 64000}  # h ~ unknowns^(-1/3): 1/10, 1/20, 1/40
+    def row(level, dt):
+        h = unknowns[level] ** (-1 / 3)
+        r = {q: "" for q in wp.QUANTITIES}
+        r.update(config="facsi", scheme="bdf2", geometry="curved", level=str(level), dt=f"{dt:g}",
+                 fluid_unknowns=str(unknowns[level]), seconds="1", interface_l2=repr(exact + a * h ** 2 + b * dt ** 3))
+        return r
+    full = [row(lv, dt) for lv in unknowns for dt in wp.DTS]
+    partial = [r for r in full if not (r["level"] == "2" and math.isclose(float(r["dt"]), wp.DTS[-1]))]
+    with tempfile.TemporaryDirectory() as d:
+        wp.OUT = os.path.join(d, "wp")
+        for rows, time_level in ((full, "2"), (partial, "1")):
+            errors = wp.errors(rows)
+            with open(wp.OUT + "_orders.csv") as f:
+                (ref,) = [r for r in csv.DictReader(f) if r["quantity"] == "interface_l2"]
+            print(ref)
+            assert abs(float(ref["reference"]) - exact) < 1e-12 * exact, ref
+            assert abs(float(ref["order_h"]) - 2) < 1e-9 and abs(float(ref["order_dt"]) - 3) < 1e-9, ref
+            assert ref["order_dt_level"] == time_level, ref
+            finest = max(rows, key=lambda r: (int(r["level"]), -float(r["dt"])))
+            expected = abs(float(finest["interface_l2"]) - exact) / exact
+            between(errors[id(finest)]["interface_l2"], expected * (1 - 1e-9), expected * (1 + 1e-9), "relative error of the finest run")
 
 
 if __name__ == "__main__":
