@@ -112,7 +112,7 @@ def main():
     rows, start = load(), loadavg()
     # the scene files and the code a row was measured with (rows are kept across calls)
     git = lambda *a: subprocess.run(["git", *a], cwd=TOP, stdout=subprocess.PIPE, text=True).stdout.strip()
-    commit = git("rev-parse", "--short", "HEAD") + ("-dirty" if git("status", "--porcelain", "--", ".", ":!bench/results") else "")
+    commit = git("rev-parse", "--short", "HEAD") + ("-dirty" if git("status", "--porcelain", "--untracked-files=no", "--", ".", ":!bench/results") else "")
     done = {tuple(str(r[k]) for k in KEY) for r in rows}
     report = os.path.join(tempfile.mkdtemp(), "report.json")
     for level in map(int, arg("--levels", ["0", "1", "2"])):
