@@ -1710,6 +1710,7 @@ def work_precision_reference():
                 (ref,) = [r for r in csv.DictReader(f) if r["quantity"] == "interface_l2"]
             print(ref)
             assert abs(float(ref["reference"]) - exact) < 1e-12 * exact, ref
+            assert abs(float(ref["reference_from_2dt"]) - exact) < 1e-12 * exact, ref
             assert abs(float(ref["order_h"]) - 2) < 1e-9 and abs(float(ref["order_dt"]) - 3) < 1e-9, ref
             assert ref["order_dt_level"] == time_level, ref
             finest = max(rows, key=lambda r: (int(r["level"]), -float(r["dt"])))
