@@ -16,11 +16,12 @@ the inlet's), the first peak of the axis pressure and of the inner wall's radial
 three samples around it); and the interface displacement's L2 norm in space and time.
 
 Every solver configuration solves the same discrete problem to the same tolerance, so the error
-of a run is that of its (mesh, dt, scheme); the reference of each quantity, per geometry, is
-Richardson's extrapolation from BDF2's runs (backward Euler's, computed the same way and written
-next to it, extrapolates from outside its asymptotic range) under the model q(h, dt) = q* + E_h(h)
-+ E_t(dt): q* = q(h_c, dt_c) - E_t(dt_c) - E_h(h_c) at the finest run (the finest level, its
-smallest step). E_t(dt) = (q(2 dt3) - q(dt3)) / (2^p_t - 1) (dt / dt3)^p_t from the three steps
+of a run is that of its (mesh, dt, scheme). Every run is measured against one reference per
+quantity: Richardson's extrapolation from BDF2's runs, on curved cells where they have a space
+correction (backward Euler's and straight cells', computed the same way, are written next to
+it; backward Euler's extrapolates from outside its asymptotic range), under the model
+q(h, dt) = q* + E_h(h) + E_t(dt): q* = q(h_c, dt_c) - E_t(dt_c) - E_h(h_c) at the finest run (the
+finest level, its smallest step). E_t(dt) = (q(2 dt3) - q(dt3)) / (2^p_t - 1) (dt / dt3)^p_t from the three steps
 (dt3 the smallest) of the finest level run at all of them, p_t observed there; E_h(h_c) =
 (q(h_c-1) - q(h_c)) / ((h_c-1 / h_c)^p_h - 1) at the smallest step run on three levels, p_h
 observed there (h ~ fluid velocity unknowns^(-1/3), as the levels are not nested); orders
