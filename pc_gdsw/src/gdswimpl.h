@@ -7,10 +7,13 @@
      coarse_operator.cxx A_0 = Phi^T A Phi
      coarse_solver.cxx  the solver of A_0
      first_level.cxx    local solvers on Omega_i^delta and their restriction/prolongation
-     threads.cxx        one thread per rank while the set-up factors
-     huge_pages.cxx     the local factors on transparent huge pages
-     single_factor.cxx  the first level's Cholesky factors kept in single precision
-     gdsw.cxx           the PC object: options, setup order, apply and its transpose, view, public API */
+   around them the PC object:
+     gdsw.cxx           setup order, apply and its transpose, view, options, public API
+   and what the set-up asks of the machine and of PETSc, in platform/:
+     platform/ordering.cxx      nested dissection of the node graph for the local factorisations
+     platform/threads.cxx       one thread per rank while the set-up factors
+     platform/huge_pages.cxx    the local factors on transparent huge pages
+     platform/single_factor.cxx the first level's Cholesky factors kept in single precision */
 #pragma once
 
 #include <petscgdsw.h>

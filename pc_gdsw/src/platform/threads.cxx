@@ -7,7 +7,7 @@
    threads take cores from the other ranks and cost a futex wake-up per supernode. With the
    runtime's max-active-levels at 0 every parallel region the set-up opens runs on the calling
    thread. A user who asked for threads (OMP_NUM_THREADS above 1) keeps the runtime as it is. */
-#include "gdswimpl.h"
+#include "../gdswimpl.h"
 #include <cstdlib>
 #include <omp.h>
 

@@ -6,7 +6,7 @@
    dofs together in the supernodes. Each subdomain is dissected once, on its overlapping matrix:
    the interior matrix of the harmonic extension, a principal submatrix, takes the restriction of
    that order (a separator of Omega_i^delta also separates its part of the interior). */
-#include "gdswimpl.h"
+#include "../gdswimpl.h"
 #include <metis.h>
 #include <algorithm>
 #include <numeric>

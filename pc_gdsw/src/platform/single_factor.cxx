@@ -8,7 +8,7 @@
    right-hand side against the double-precision one. Where they differ by more than
    -mat_cholmod_single_deviation_max (1e-3) relative to the solution (an ill-conditioned matrix),
    the factor stays in double precision. */
-#include "gdswimpl.h"
+#include "../gdswimpl.h"
 #if GDSW_HAVE_SINGLE_FACTOR
 #include <cholmod.h>
 #include <SuiteSparse_config.h>

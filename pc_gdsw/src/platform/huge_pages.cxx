@@ -14,7 +14,7 @@
    instead of being mapped and faulted in again; the kept ones are unmapped when the step ends.
    The hooks stay installed once set, because a block mapped here may be freed long after (the
    library is linked with -z nodelete, so that a dlclose() cannot unmap them). */
-#include "gdswimpl.h"
+#include "../gdswimpl.h"
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
