@@ -3,7 +3,7 @@
    Use it from any PETSc program with -pc_type gdsw after either
      -dll_append <prefix>/lib/libpetscgdsw.so   (no code change), or
      PCGDSWRegister()                           (when linking the library).
-   The manual pages are in pc_gdsw/src/api.cxx and (PCGDSW) pc_gdsw/src/gdsw.cxx. */
+   The manual pages are in pc_gdsw/src/api_*.cxx and (PCGDSW) pc_gdsw/src/gdsw.cxx. */
 #ifndef PETSCGDSW_H
 #define PETSCGDSW_H
 

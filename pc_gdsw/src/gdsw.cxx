@@ -2,8 +2,9 @@
 /* PCGDSW: two-level overlapping Schwarz with the GDSW coarse space (Dohrmann, Klawonn,
    Widlund 2008; Heinlein, Klawonn, Rheinbach 2015, eq. 1):
        M^{-1} = Phi (Phi^T A Phi)^{-1} Phi^T + sum_i R_i^T A_i^{-1} R_i.
-   This file holds the PC object: options, the order of the setup modules, apply and its
-   transpose, view, the composed methods and the registration; api.cxx the public functions. */
+   This file holds the PC object: the order of the setup modules, apply and its transpose, view,
+   creation and registration. The options are read in options.cxx, the public functions with the
+   methods they call are in api_subdomains.cxx, api_coarse_space.cxx and api_first_level.cxx. */
 #include "gdswimpl.h"
 #include <string>
 
@@ -12,8 +13,6 @@ const char *const PCGDSWFirstLevelTypes[]  = {"additive", "restricted", "PCGDSWF
 const char *const PCGDSWRGDSWWeightTypes[] = {"equal", "distance", "PCGDSWRGDSWWeightType", "PC_GDSW_RGDSW_WEIGHTS_", nullptr};
 const char *const PCGDSWLocalSolverTypes[] = {"exact", "incomplete", "adaptive", "PCGDSWLocalSolverType", "PC_GDSW_LOCAL_", nullptr};
 const char *const PCGDSWLocalPrecisions[]  = {"double", "single", "PCGDSWLocalPrecision", "PC_GDSW_LOCAL_PRECISION_", nullptr};
-/* the PCCompositeType values PCGDSW takes, in their order in PCCompositeTypes[] */
-static const char *const CombinationTypes[] = {"additive", "multiplicative", "symmetric_multiplicative", "PCCompositeType", "PC_COMPOSITE_", nullptr};
 
 /* The size rule's target when -pc_gdsw_subdomain_size is not given: exact local solves cost
    O(n^2) per subdomain in 3D, so fewer and larger ones (12000 dofs) balance them against the
@@ -131,19 +130,6 @@ static PetscErrorCode PCReset_GDSW(PC pc)
   PetscCall(PetscFree(gd->ovlArr));
   gd->coarseDim = 0;
   gd->counts[0] = gd->counts[1] = gd->counts[2] = 0;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode DestroyUserSubdomains(PC_GDSW *gd)
-{
-  PetscFunctionBegin;
-  for (PetscInt i = 0; i < gd->nUser; i++) {
-    PetscCall(ISDestroy(&gd->userNon[i]));
-    if (gd->userOvl) PetscCall(ISDestroy(&gd->userOvl[i]));
-  }
-  PetscCall(PetscFree(gd->userNon));
-  PetscCall(PetscFree(gd->userOvl));
-  gd->nUser = -1;
   PetscFunctionReturn(0);
 }
 
@@ -306,104 +292,11 @@ static PetscErrorCode PCApplyTranspose_GDSW(PC pc, Vec x, Vec y)
   PetscFunctionReturn(0);
 }
 
-/* What each integer option takes: the end of its error messages. */
-static const char SubdomainsRange[]    = "give the number of subdomains per MPI rank, at least 1, or -1 (PETSC_DECIDE) for about -pc_gdsw_subdomain_size dofs each";
-static const char SubdomainSizeRange[] = "give the target number of dofs per subdomain, at least 1";
-static const char OverlapRange[]       = "give the number of layers, 0 or more";
-static const char ConditionRange[]     = "give the largest condition number estimate at which a subdomain keeps its incomplete factor, a finite number of at least 1";
-
-/* PETSc's parsers reject a malformed value on every rank, each printing a message that names
-   neither the option nor (for numbers) what it takes: check the value first, once for the PC
-   (kind: OPTION_INT, OPTION_REAL, OPTION_BOOL, or OPTION_ELIST with the enum's list). */
-static PetscErrorCode CheckOptionValue(PC pc, const char name[], PetscOptionType kind, const char *const *list, const char range[])
+/* What the getters of the set-up's results check first. */
+PetscErrorCode GDSWCheckSetUp(PC pc)
 {
-  const char    *prefix = ((PetscObject)pc)->prefix;
-  char           value[256];
-  PetscBool      set, ok = PETSC_TRUE;
-  PetscErrorCode ierr;
-
   PetscFunctionBegin;
-  PetscCall(PetscOptionsGetString(((PetscObject)pc)->options, prefix, name, value, sizeof(value), &set));
-  if (!set) PetscFunctionReturn(0);
-  std::string allowed;
-  if (kind == OPTION_ELIST) {
-    PetscEnum e;
-    PetscCall(PetscEnumFind(list, value, &e, &ok));
-    allowed = "one of:";
-    for (PetscInt i = 0; list[i + 2]; i++) allowed += std::string(i ? ", " : " ") + list[i]; /* the list ends with its type name, prefix, NULL */
-  } else if (kind != OPTION_BOOL || value[0]) { /* a logical option without a value is true */
-    PetscInt  i;
-    PetscReal r = 0;
-    PetscBool b;
-    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
-    ierr = kind == OPTION_INT ? PetscOptionsStringToInt(value, &i) : kind == OPTION_REAL ? PetscOptionsStringToReal(value, &r) : PetscOptionsStringToBool(value, &b);
-    PetscCall(PetscPopErrorHandler());
-    ok      = (PetscBool)(!ierr && !PetscIsInfOrNanReal(r));
-    allowed = kind == OPTION_INT ? std::string("an integer: ") + range : kind == OPTION_REAL ? std::string("a number: ") + range : "true or false";
-  }
-  PetscCheck(ok, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_WRONG, "PCGDSW: -%s%s %s is not %s", prefix ? prefix : "", name + 1, value[0] ? value : "(no value)", allowed.c_str());
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCSetFromOptions_GDSW(PC pc, PetscOptionItems *PetscOptionsObject)
-{
-  PC_GDSW              *gd = (PC_GDSW *)pc->data;
-  PetscBool             flg, b;
-  PetscInt              n;
-  PCGDSWCoarseSpaceType coarse;
-  PCGDSWRGDSWWeightType weights;
-  PCCompositeType       combination;
-  PCGDSWFirstLevelType  firstLevel;
-  PCGDSWLocalSolverType local;
-  PCGDSWLocalPrecision  precision;
-  PetscReal             r;
-
-  PetscFunctionBegin;
-  PetscCall(CheckOptionValue(pc, "-pc_gdsw_subdomains", OPTION_INT, nullptr, SubdomainsRange));
-  PetscCall(CheckOptionValue(pc, "-pc_gdsw_subdomain_size", OPTION_INT, nullptr, SubdomainSizeRange));
-  PetscCall(CheckOptionValue(pc, "-pc_gdsw_overlap", OPTION_INT, nullptr, OverlapRange));
-  PetscCall(CheckOptionValue(pc, "-pc_gdsw_coarse_space", OPTION_ELIST, PCGDSWCoarseSpaceTypes, nullptr));
-  PetscCall(CheckOptionValue(pc, "-pc_gdsw_rgdsw_weights", OPTION_ELIST, PCGDSWRGDSWWeightTypes, nullptr));
-  PetscCall(CheckOptionValue(pc, "-pc_gdsw_rotations", OPTION_BOOL, nullptr, nullptr));
-  PetscCall(CheckOptionValue(pc, "-pc_gdsw_repartition", OPTION_BOOL, nullptr, nullptr));
-  PetscCall(CheckOptionValue(pc, "-pc_gdsw_combination", OPTION_ELIST, CombinationTypes, nullptr));
-  PetscCall(CheckOptionValue(pc, "-pc_gdsw_first_level_type", OPTION_ELIST, PCGDSWFirstLevelTypes, nullptr));
-  PetscCall(CheckOptionValue(pc, "-pc_gdsw_reuse_coarse_basis", OPTION_BOOL, nullptr, nullptr));
-  PetscCall(CheckOptionValue(pc, "-pc_gdsw_huge_pages", OPTION_BOOL, nullptr, nullptr));
-  PetscCall(CheckOptionValue(pc, "-pc_gdsw_local_solver", OPTION_ELIST, PCGDSWLocalSolverTypes, nullptr));
-  PetscCall(CheckOptionValue(pc, "-pc_gdsw_local_condition_max", OPTION_REAL, nullptr, ConditionRange));
-  PetscCall(CheckOptionValue(pc, "-pc_gdsw_local_precision", OPTION_ELIST, PCGDSWLocalPrecisions, nullptr));
-  PetscOptionsHeadBegin(PetscOptionsObject, "GDSW two-level overlapping Schwarz options");
-  /* first: the size rule's default target depends on it */
-  PetscCall(PetscOptionsEnum("-pc_gdsw_local_solver", "First level's local solvers: exact factorisations, incomplete ones (ICC(0)/ILU(0)), or adaptive: incomplete where its condition estimate is at most -pc_gdsw_local_condition_max, exact elsewhere", "PCGDSWSetLocalSolverType", PCGDSWLocalSolverTypes, (PetscEnum)gd->localSolver, (PetscEnum *)&local, &flg));
-  if (flg) PetscCall(PCGDSWSetLocalSolverType(pc, local));
-  PetscCall(PetscOptionsReal("-pc_gdsw_local_condition_max", "Adaptive local solvers: the largest condition estimate of an incomplete factor's preconditioned subdomain matrix that keeps it", "PCGDSWSetLocalConditionMax", gd->conditionMax, &r, &flg));
-  if (flg) PetscCall(PCGDSWSetLocalConditionMax(pc, r));
-  PetscCall(PetscOptionsEnum("-pc_gdsw_local_precision", "Precision the first level's Cholesky factors are kept and applied in: double, or single where that solves to within 1e-3 of double (MATSOLVERCHOLMODSINGLE; for CG and FGMRES: GMRES then stalls, near a relative residual of 1e-5 on elasticity)", "PCGDSWSetLocalPrecision", PCGDSWLocalPrecisions, (PetscEnum)gd->localPrecision, (PetscEnum *)&precision, &flg));
-  if (flg) PetscCall(PCGDSWSetLocalPrecision(pc, precision));
-  PetscCall(PetscOptionsInt("-pc_gdsw_subdomains", "Subdomains per MPI rank (METIS on the rank's node graph); -1 (PETSC_DECIDE): about -pc_gdsw_subdomain_size dofs each", "PCGDSWSetSubdomainsPerRank", gd->nsubPerRank, &n, &flg));
-  if (flg) PetscCall(PCGDSWSetSubdomainsPerRank(pc, n));
-  PetscCall(PetscOptionsBool("-pc_gdsw_repartition", "Subdomains from a parallel partition of the whole matrix graph (MatPartitioning, options -pc_gdsw_mat_partitioning_*) instead of METIS within each rank's rows", "PCGDSWSetRepartition", gd->repartition, &b, &flg));
-  if (flg) PetscCall(PCGDSWSetRepartition(pc, b));
-  PetscCall(PetscOptionsInt("-pc_gdsw_subdomain_size", "Target dofs per subdomain when -pc_gdsw_subdomains is not given (the fastest on 3D elasticity here: 12000 with exact local solvers, 3000 with incomplete or adaptive ones)", "PCGDSWSetSubdomainSize", GDSWSubdomainSizeTarget(gd), &n, &flg));
-  if (flg) PetscCall(PCGDSWSetSubdomainSize(pc, n));
-  PetscCall(PetscOptionsInt("-pc_gdsw_overlap", "Overlap in layers of the matrix graph (used when the caller gives no overlapping subdomains)", "PCGDSWSetOverlap", gd->overlap, &n, &flg));
-  if (flg) PetscCall(PCGDSWSetOverlap(pc, n));
-  PetscCall(PetscOptionsEnum("-pc_gdsw_coarse_space", "Coarse space", "PCGDSWSetCoarseSpaceType", PCGDSWCoarseSpaceTypes, (PetscEnum)gd->coarseType, (PetscEnum *)&coarse, &flg));
-  if (flg) PetscCall(PCGDSWSetCoarseSpaceType(pc, coarse));
-  PetscCall(PetscOptionsEnum("-pc_gdsw_rgdsw_weights", "RGDSW partition of unity: equal (option 1) or by inverse distance to the coarse nodes (option 2.2, needs coordinates)", "PCGDSWSetRGDSWWeightType", PCGDSWRGDSWWeightTypes, (PetscEnum)gd->rgdswWeights, (PetscEnum *)&weights, &flg));
-  if (flg) PetscCall(PCGDSWSetRGDSWWeightType(pc, weights));
-  PetscCall(PetscOptionsBool("-pc_gdsw_rotations", "Use the rotations of the null space (false: GDSW-nr, translations only)", "PCGDSWSetRotations", gd->rotations, &b, &flg));
-  if (flg) PetscCall(PCGDSWSetRotations(pc, b));
-  PetscCall(PetscOptionsEnum("-pc_gdsw_combination", "How the coarse and local corrections are combined", "PCGDSWSetCombinationType", CombinationTypes, (PetscEnum)gd->combination, (PetscEnum *)&combination, &flg));
-  if (flg) PetscCall(PCGDSWSetCombinationType(pc, combination));
-  PetscCall(PetscOptionsEnum("-pc_gdsw_first_level_type", "Plain additive (symmetric) or restricted (RAS) prolongation of the local corrections", "PCGDSWSetFirstLevelType", PCGDSWFirstLevelTypes, (PetscEnum)gd->firstLevel, (PetscEnum *)&firstLevel, &flg));
-  if (flg) PetscCall(PCGDSWSetFirstLevelType(pc, firstLevel));
-  PetscCall(PetscOptionsBool("-pc_gdsw_reuse_coarse_basis", "Keep Phi when the operator's values change; recompute only A_0 = Phi^T A Phi", "PCGDSWSetReuseCoarseBasis", gd->reuseCoarseBasis, &b, &flg));
-  if (flg) PetscCall(PCGDSWSetReuseCoarseBasis(pc, b));
-  PetscCall(PetscOptionsBool("-pc_gdsw_huge_pages", "During set-up, the blocks of 2 MiB or more it keeps (local factors, subdomain matrices) on transparent huge pages where the kernel gives them on request (mode madvise)", "PCGDSWSetHugePages", gd->hugePages, &b, &flg));
-  if (flg) PetscCall(PCGDSWSetHugePages(pc, b));
-  PetscOptionsHeadEnd();
+  PetscCheck(pc->setupcalled, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_WRONGSTATE, "PCGDSW: call PCSetUp() first");
   PetscFunctionReturn(0);
 }
 
@@ -416,7 +309,7 @@ static PetscErrorCode PCView_GDSW(PC pc, PetscViewer viewer)
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
   if (!ascii) PetscFunctionReturn(0);
   PetscCall(PetscViewerASCIIPrintf(viewer, "  coarse space %s%s, %s combination, %s first level\n", PCGDSWCoarseSpaceTypes[gd->coarseType],
-                                   gd->coarseType != PC_GDSW_COARSE_NONE && !gd->rotations ? " without rotations" : "", CombinationTypes[gd->combination], PCGDSWFirstLevelTypes[gd->firstLevel]));
+                                   gd->coarseType != PC_GDSW_COARSE_NONE && !gd->rotations ? " without rotations" : "", GDSWCombinationTypes[gd->combination], PCGDSWFirstLevelTypes[gd->firstLevel]));
   if (!pc->setupcalled) {
     if (gd->nsubPerRank == PETSC_DECIDE) PetscCall(PetscViewerASCIIPrintf(viewer, "  subdomains per rank: chosen at setup for about %" PetscInt_FMT " dofs each, overlap %" PetscInt_FMT " (not set up yet)\n", GDSWSubdomainSizeTarget(gd), gd->overlap));
     else PetscCall(PetscViewerASCIIPrintf(viewer, "  subdomains per rank %" PetscInt_FMT ", overlap %" PetscInt_FMT " (not set up yet)\n", gd->nsubPerRank, gd->overlap));
@@ -475,410 +368,20 @@ static PetscErrorCode PCView_GDSW(PC pc, PetscViewer viewer)
   PetscFunctionReturn(0);
 }
 
-/* Coordinates change the coarse space: the next PCSetUp() starts afresh. */
-static PetscErrorCode PCSetCoordinates_GDSW(PC pc, PetscInt dim, PetscInt n, PetscReal *coords)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  PetscCheck(dim >= 1 && dim <= 3, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: PCSetCoordinates() dimension %" PetscInt_FMT " must be 1, 2 or 3", dim);
-  for (PetscInt k = 0; k < dim * n; k++)
-    PetscCheck(!PetscIsInfOrNanReal(coords[k]), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: PCSetCoordinates() coordinate %" PetscInt_FMT " of local node %" PetscInt_FMT " is not finite (NaN or Inf): the rigid-body modes need finite coordinates", k % dim, k / dim);
-  PetscCall(PetscFree(gd->coords));
-  PetscCall(PetscMalloc1(dim * n, &gd->coords));
-  PetscCall(PetscArraycpy(gd->coords, coords, dim * n));
-  gd->coordDim = dim, gd->nCoordNodes = n;
-  pc->setupcalled = 0;
-  PetscFunctionReturn(0);
-}
-
-/* ---- the implementations of the public functions (their manual pages are further down) ---- */
-
-static PetscErrorCode PCGDSWSetSubdomains_GDSW(PC pc, PetscInt n, IS non[], IS ovl[])
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  PetscCheck(n >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "PCGDSWSetSubdomains: the number of subdomains %" PetscInt_FMT " must be >= 0", n);
-  for (PetscInt i = 0; i < n; i++) PetscCall(PetscObjectReference((PetscObject)non[i]));
-  if (ovl)
-    for (PetscInt i = 0; i < n; i++) PetscCall(PetscObjectReference((PetscObject)ovl[i]));
-  PetscCall(DestroyUserSubdomains(gd));
-  PetscCall(PetscMalloc1(n, &gd->userNon));
-  for (PetscInt i = 0; i < n; i++) gd->userNon[i] = non[i];
-  if (ovl) {
-    PetscCall(PetscMalloc1(n, &gd->userOvl));
-    for (PetscInt i = 0; i < n; i++) gd->userOvl[i] = ovl[i];
-  }
-  gd->nUser       = n;
-  pc->setupcalled = 0;
-  PetscFunctionReturn(0);
-}
-
-#define GDSW_REQUIRE_SETUP(pc) PetscCheck((pc)->setupcalled, PetscObjectComm((PetscObject)(pc)), PETSC_ERR_ARG_WRONGSTATE, "PCGDSW: call PCSetUp() first")
-
-static PetscErrorCode PCGDSWGetSubdomains_GDSW(PC pc, PetscInt *n, IS *non[], IS *ovl[])
-{
-  PC_GDSW       *gd   = (PC_GDSW *)pc->data;
-  const PetscInt nsub = (PetscInt)gd->sub->size();
-
-  PetscFunctionBegin;
-  GDSW_REQUIRE_SETUP(pc);
-  if (!gd->nonArr && nsub) {
-    PetscCall(PetscMalloc1(nsub, &gd->nonArr));
-    PetscCall(PetscMalloc1(nsub, &gd->ovlArr));
-    for (PetscInt i = 0; i < nsub; i++) gd->nonArr[i] = (*gd->sub)[i].nonoverlap, gd->ovlArr[i] = (*gd->sub)[i].overlap;
-  }
-  if (n) *n = nsub;
-  if (non) *non = gd->nonArr;
-  if (ovl) *ovl = gd->ovlArr;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWSetSubdomainsPerRank_GDSW(PC pc, PetscInt n)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  PetscCheck(n >= 1 || n == PETSC_DECIDE, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: -pc_gdsw_subdomains %" PetscInt_FMT " is out of range: %s", n, SubdomainsRange);
-  if (n != gd->nsubPerRank) pc->setupcalled = 0;
-  gd->nsubPerRank = n;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetSubdomainsPerRank_GDSW(PC pc, PetscInt *n)
-{
-  PetscFunctionBegin;
-  *n = ((PC_GDSW *)pc->data)->nsubPerRank;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWSetRepartition_GDSW(PC pc, PetscBool flg)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  if (flg != gd->repartition) pc->setupcalled = 0;
-  gd->repartition = flg;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetRepartition_GDSW(PC pc, PetscBool *flg)
-{
-  PetscFunctionBegin;
-  *flg = ((PC_GDSW *)pc->data)->repartition;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWSetSubdomainSize_GDSW(PC pc, PetscInt n)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  PetscCheck(n >= 1 || n == PETSC_DECIDE, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: -pc_gdsw_subdomain_size %" PetscInt_FMT " is out of range: %s", n, SubdomainSizeRange);
-  if (n != gd->subdomainSize) pc->setupcalled = 0;
-  gd->subdomainSize = n;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetSubdomainSize_GDSW(PC pc, PetscInt *n)
-{
-  PetscFunctionBegin;
-  *n = GDSWSubdomainSizeTarget((PC_GDSW *)pc->data);
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWSetOverlap_GDSW(PC pc, PetscInt k)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  PetscCheck(k >= 0, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: -pc_gdsw_overlap %" PetscInt_FMT " is out of range: %s", k, OverlapRange);
-  if (k != gd->overlap) pc->setupcalled = 0;
-  gd->overlap = k;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetOverlap_GDSW(PC pc, PetscInt *k)
-{
-  PetscFunctionBegin;
-  *k = ((PC_GDSW *)pc->data)->overlap;
-  PetscFunctionReturn(0);
-}
-
-/* An enum value from the API (options are checked by name in CheckOptionValue()). */
-#define GDSW_CHECK_ENUM(pc, t, last, list) \
-  PetscCheck((t) >= 0 && (t) <= (last), PetscObjectComm((PetscObject)(pc)), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: %d is not a valid %s", (int)(t), (list)[(last) + 1])
-
-static PetscErrorCode PCGDSWSetLocalSolverType_GDSW(PC pc, PCGDSWLocalSolverType t)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  GDSW_CHECK_ENUM(pc, t, PC_GDSW_LOCAL_ADAPTIVE, PCGDSWLocalSolverTypes);
-  if (t != gd->localSolver) pc->setupcalled = 0; /* new local solvers, and the size rule's target may change */
-  gd->localSolver = t;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetLocalSolverType_GDSW(PC pc, PCGDSWLocalSolverType *t)
-{
-  PetscFunctionBegin;
-  *t = ((PC_GDSW *)pc->data)->localSolver;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWSetLocalConditionMax_GDSW(PC pc, PetscReal c)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  PetscCheck(c >= 1 && !PetscIsInfOrNanReal(c), PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "PCGDSW: -pc_gdsw_local_condition_max %g is out of range: %s", (double)c, ConditionRange);
-  if (c != gd->conditionMax) pc->setupcalled = 0;
-  gd->conditionMax = c;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetLocalConditionMax_GDSW(PC pc, PetscReal *c)
-{
-  PetscFunctionBegin;
-  *c = ((PC_GDSW *)pc->data)->conditionMax;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWSetCoarseSpaceType_GDSW(PC pc, PCGDSWCoarseSpaceType t)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  GDSW_CHECK_ENUM(pc, t, PC_GDSW_COARSE_NONE, PCGDSWCoarseSpaceTypes);
-  if (t != gd->coarseType) pc->setupcalled = 0;
-  gd->coarseType = t;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetCoarseSpaceType_GDSW(PC pc, PCGDSWCoarseSpaceType *t)
-{
-  PetscFunctionBegin;
-  *t = ((PC_GDSW *)pc->data)->coarseType;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWSetRGDSWWeightType_GDSW(PC pc, PCGDSWRGDSWWeightType t)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  GDSW_CHECK_ENUM(pc, t, PC_GDSW_RGDSW_WEIGHTS_DISTANCE, PCGDSWRGDSWWeightTypes);
-  if (t != gd->rgdswWeights) pc->setupcalled = 0;
-  gd->rgdswWeights = t;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetRGDSWWeightType_GDSW(PC pc, PCGDSWRGDSWWeightType *t)
-{
-  PetscFunctionBegin;
-  *t = ((PC_GDSW *)pc->data)->rgdswWeights;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWSetRotations_GDSW(PC pc, PetscBool flg)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  if (flg != gd->rotations) pc->setupcalled = 0;
-  gd->rotations = flg;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetRotations_GDSW(PC pc, PetscBool *flg)
-{
-  PetscFunctionBegin;
-  *flg = ((PC_GDSW *)pc->data)->rotations;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWSetCombinationType_GDSW(PC pc, PCCompositeType t)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  PetscCheck(t == PC_COMPOSITE_ADDITIVE || t == PC_COMPOSITE_MULTIPLICATIVE || t == PC_COMPOSITE_SYMMETRIC_MULTIPLICATIVE, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE,
-             "PCGDSW: the combination %s is not one PCGDSW does: use PC_COMPOSITE_ADDITIVE, PC_COMPOSITE_MULTIPLICATIVE or PC_COMPOSITE_SYMMETRIC_MULTIPLICATIVE", t >= 0 && t <= PC_COMPOSITE_GKB ? PCCompositeTypes[t] : "(out of range)");
-  if (t != gd->combination) pc->setupcalled = 0; /* the multiplicative and balanced ones have work vectors, the balanced one W */
-  gd->combination = t;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetCombinationType_GDSW(PC pc, PCCompositeType *t)
-{
-  PetscFunctionBegin;
-  *t = ((PC_GDSW *)pc->data)->combination;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWSetFirstLevelType_GDSW(PC pc, PCGDSWFirstLevelType t)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  GDSW_CHECK_ENUM(pc, t, PC_GDSW_FIRST_LEVEL_RESTRICTED, PCGDSWFirstLevelTypes);
-  if (t != gd->firstLevel) pc->setupcalled = 0; /* the restricted prolongation has its own scatter */
-  gd->firstLevel = t;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetFirstLevelType_GDSW(PC pc, PCGDSWFirstLevelType *t)
-{
-  PetscFunctionBegin;
-  *t = ((PC_GDSW *)pc->data)->firstLevel;
-  PetscFunctionReturn(0);
-}
-
-/* Read at the next setup with new values: nothing to rebuild. */
-static PetscErrorCode PCGDSWSetReuseCoarseBasis_GDSW(PC pc, PetscBool flg)
-{
-  PetscFunctionBegin;
-  ((PC_GDSW *)pc->data)->reuseCoarseBasis = flg;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWSetLocalPrecision_GDSW(PC pc, PCGDSWLocalPrecision p)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  GDSW_CHECK_ENUM(pc, p, PC_GDSW_LOCAL_PRECISION_SINGLE, PCGDSWLocalPrecisions);
-  if (p != gd->localPrecision) pc->setupcalled = 0; /* new local factors */
-  gd->localPrecision = p;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetLocalPrecision_GDSW(PC pc, PCGDSWLocalPrecision *p)
-{
-  PetscFunctionBegin;
-  *p = ((PC_GDSW *)pc->data)->localPrecision;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWSetHugePages_GDSW(PC pc, PetscBool flg)
-{
-  PetscFunctionBegin;
-  ((PC_GDSW *)pc->data)->hugePages = flg;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetHugePages_GDSW(PC pc, PetscBool *flg)
-{
-  PetscFunctionBegin;
-  *flg = ((PC_GDSW *)pc->data)->hugePages;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetReuseCoarseBasis_GDSW(PC pc, PetscBool *flg)
-{
-  PetscFunctionBegin;
-  *flg = ((PC_GDSW *)pc->data)->reuseCoarseBasis;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetCoarseBasis_GDSW(PC pc, Mat *Phi)
-{
-  PetscFunctionBegin;
-  GDSW_REQUIRE_SETUP(pc);
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-  if (gd->Phi) PetscCall(GDSWAssemblePhiMatrix(pc));
-  *Phi = gd->PhiAssembled;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetCoarseOperator_GDSW(PC pc, Mat *A0)
-{
-  PetscFunctionBegin;
-  GDSW_REQUIRE_SETUP(pc);
-  *A0 = ((PC_GDSW *)pc->data)->A0;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetCoarseKSP_GDSW(PC pc, KSP *ksp)
-{
-  PetscFunctionBegin;
-  GDSW_REQUIRE_SETUP(pc);
-  *ksp = ((PC_GDSW *)pc->data)->coarseKsp;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode PCGDSWGetInterfaceCounts_GDSW(PC pc, PetscInt *faces, PetscInt *edges, PetscInt *vertices)
-{
-  PC_GDSW *gd = (PC_GDSW *)pc->data;
-
-  PetscFunctionBegin;
-  GDSW_REQUIRE_SETUP(pc);
-  if (faces) *faces = gd->counts[0];
-  if (edges) *edges = gd->counts[1];
-  if (vertices) *vertices = gd->counts[2];
-  PetscFunctionReturn(0);
-}
-
-/* The composed methods, added in PCCreate_GDSW() and removed in PCDestroy_GDSW(). */
-static PetscErrorCode ComposeMethods(PC pc, PetscBool add)
-{
-  PetscObject o = (PetscObject)pc;
-
-  PetscFunctionBegin;
-#define GDSW_COMPOSE(name) PetscCall(PetscObjectComposeFunction(o, #name "_C", add ? name##_GDSW : nullptr))
-  GDSW_COMPOSE(PCSetCoordinates);
-  GDSW_COMPOSE(PCGDSWSetSubdomains);
-  GDSW_COMPOSE(PCGDSWGetSubdomains);
-  GDSW_COMPOSE(PCGDSWSetSubdomainsPerRank);
-  GDSW_COMPOSE(PCGDSWGetSubdomainsPerRank);
-  GDSW_COMPOSE(PCGDSWSetRepartition);
-  GDSW_COMPOSE(PCGDSWGetRepartition);
-  GDSW_COMPOSE(PCGDSWSetSubdomainSize);
-  GDSW_COMPOSE(PCGDSWGetSubdomainSize);
-  GDSW_COMPOSE(PCGDSWSetOverlap);
-  GDSW_COMPOSE(PCGDSWGetOverlap);
-  GDSW_COMPOSE(PCGDSWSetLocalSolverType);
-  GDSW_COMPOSE(PCGDSWGetLocalSolverType);
-  GDSW_COMPOSE(PCGDSWSetLocalConditionMax);
-  GDSW_COMPOSE(PCGDSWGetLocalConditionMax);
-  GDSW_COMPOSE(PCGDSWSetLocalPrecision);
-  GDSW_COMPOSE(PCGDSWGetLocalPrecision);
-  GDSW_COMPOSE(PCGDSWSetCoarseSpaceType);
-  GDSW_COMPOSE(PCGDSWGetCoarseSpaceType);
-  GDSW_COMPOSE(PCGDSWSetRGDSWWeightType);
-  GDSW_COMPOSE(PCGDSWGetRGDSWWeightType);
-  GDSW_COMPOSE(PCGDSWSetRotations);
-  GDSW_COMPOSE(PCGDSWGetRotations);
-  GDSW_COMPOSE(PCGDSWSetCombinationType);
-  GDSW_COMPOSE(PCGDSWGetCombinationType);
-  GDSW_COMPOSE(PCGDSWSetFirstLevelType);
-  GDSW_COMPOSE(PCGDSWGetFirstLevelType);
-  GDSW_COMPOSE(PCGDSWSetReuseCoarseBasis);
-  GDSW_COMPOSE(PCGDSWGetReuseCoarseBasis);
-  GDSW_COMPOSE(PCGDSWSetHugePages);
-  GDSW_COMPOSE(PCGDSWGetHugePages);
-  GDSW_COMPOSE(PCGDSWGetCoarseBasis);
-  GDSW_COMPOSE(PCGDSWGetCoarseOperator);
-  GDSW_COMPOSE(PCGDSWGetCoarseKSP);
-  GDSW_COMPOSE(PCGDSWGetInterfaceCounts);
-#undef GDSW_COMPOSE
-  PetscFunctionReturn(0);
-}
-
 static PetscErrorCode PCDestroy_GDSW(PC pc)
 {
   PC_GDSW *gd = (PC_GDSW *)pc->data;
 
   PetscFunctionBegin;
   PetscCall(PCReset_GDSW(pc));
-  PetscCall(DestroyUserSubdomains(gd));
+  PetscCall(GDSWDestroyUserSubdomains(gd));
   PetscCall(PetscFree(gd->coords));
   delete gd->sub;
   delete gd->sets;
   delete gd->dirichletMask;
-  PetscCall(ComposeMethods(pc, PETSC_FALSE));
+  PetscCall(GDSWComposeSubdomainMethods(pc, PETSC_FALSE));
+  PetscCall(GDSWComposeCoarseSpaceMethods(pc, PETSC_FALSE));
+  PetscCall(GDSWComposeFirstLevelMethods(pc, PETSC_FALSE));
   PetscCall(PetscFree(pc->data));
   PetscFunctionReturn(0);
 }
@@ -979,9 +482,11 @@ PETSC_EXTERN PetscErrorCode PCCreate_GDSW(PC pc)
   pc->ops->applytranspose = PCApplyTranspose_GDSW;
   pc->ops->reset          = PCReset_GDSW;
   pc->ops->destroy        = PCDestroy_GDSW;
-  pc->ops->setfromoptions = PCSetFromOptions_GDSW;
+  pc->ops->setfromoptions = GDSWSetFromOptions;
   pc->ops->view           = PCView_GDSW;
-  PetscCall(ComposeMethods(pc, PETSC_TRUE));
+  PetscCall(GDSWComposeSubdomainMethods(pc, PETSC_TRUE));
+  PetscCall(GDSWComposeCoarseSpaceMethods(pc, PETSC_TRUE));
+  PetscCall(GDSWComposeFirstLevelMethods(pc, PETSC_TRUE));
   PetscFunctionReturn(0);
 }
 

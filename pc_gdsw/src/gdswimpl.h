@@ -8,7 +8,11 @@
      coarse_solver.cxx  the solver of A_0
      first_level.cxx    local solvers on Omega_i^delta and their restriction/prolongation
    around them the PC object:
-     gdsw.cxx           setup order, apply and its transpose, view, options, public API
+     gdsw.cxx           setup order, apply and its transpose, view, creation, registration
+     options.cxx        the -pc_gdsw_* options: one table row each, read and checked in one pass
+     api_subdomains.cxx, api_coarse_space.cxx, api_first_level.cxx
+                        the public functions with their manual pages, each beside the composed
+                        method it calls
    and what the set-up asks of the machine and of PETSc, in platform/:
      platform/ordering.cxx      nested dissection of the node graph for the local factorisations
      platform/threads.cxx       one thread per rank while the set-up factors
@@ -19,6 +23,7 @@
 #include <petscgdsw.h>
 #include <petsc/private/pcimpl.h>
 #include <petscsf.h>
+#include <string>
 #include <vector>
 
 namespace gdsw {
@@ -142,6 +147,20 @@ typedef struct {
   VecScatter restrictTo, prolongFrom;     /* global -> work, work(subset) -> global */
   Vec        tmp1, tmp2;                  /* global-size work for the multiplicative and balanced combinations */
 } PC_GDSW;
+
+/* the PC object (gdsw.cxx), its options (options.cxx) and the composed methods of its public
+   functions (api_*.cxx) */
+PETSC_INTERN PetscErrorCode GDSWSetFromOptions(PC, PetscOptionItems *);
+PETSC_INTERN PetscErrorCode GDSWComposeSubdomainMethods(PC, PetscBool);
+PETSC_INTERN PetscErrorCode GDSWComposeCoarseSpaceMethods(PC, PetscBool);
+PETSC_INTERN PetscErrorCode GDSWComposeFirstLevelMethods(PC, PetscBool);
+PETSC_INTERN PetscErrorCode GDSWDestroyUserSubdomains(PC_GDSW *);
+PETSC_INTERN PetscErrorCode GDSWCheckSetUp(PC);
+PETSC_INTERN PetscErrorCode GDSWCheckEnum(PC, PetscEnum, PetscEnum, const char *const *);
+PETSC_INTERN std::string    GDSWOptionName(PC, const char[]); /* "-" + the PC's prefix + name without its "-" */
+PETSC_INTERN const char *const GDSWCombinationTypes[];
+/* what each numeric option takes: the end of the messages of the setter and of options.cxx */
+PETSC_INTERN const char GDSWSubdomainsTakes[], GDSWSubdomainSizeTakes[], GDSWOverlapTakes[], GDSWConditionMaxTakes[];
 
 /* module entry points */
 /* the local Cholesky factorisations' ordering: nested dissection of the node graph */
