@@ -10,15 +10,16 @@ from testlib import BUILD, ENV, between, case, main, run
 
 LIB = os.path.join(BUILD, "pc_gdsw", "libpetscgdsw.so")
 ELASTICITY = os.path.join(BUILD, "pc_gdsw", "gdsw_elasticity")
+DIAGNOSTICS = os.path.join(BUILD, "tests", "gdsw_diagnostics")  # the tutorial's solve, then looked into
 BAD_INPUT = os.path.join(BUILD, "tests", "gdsw_bad_input")
 EX56 = os.path.join(BUILD, "tests", "petsc_ksp_ksp_ex56")
 EX71 = os.path.join(BUILD, "tests", "petsc_ksp_ksp_ex71")
 EX17 = os.path.join(BUILD, "tests", "petsc_snes_ex17")
 
 
-def elasticity(*opts, np=1):
-    """The summary line(s) of the Q1 elasticity driver as dicts of numbers."""
-    out = run([ELASTICITY] + list(opts), np)
+def elasticity(*opts, np=1, driver=ELASTICITY):
+    """The summary line(s) of the Q1 elasticity tutorial (or of the diagnostics driver) as dicts of numbers."""
+    out = run([driver] + list(opts), np)
     rows = []
     for line in out.splitlines():
         if line.startswith("dofs "):
@@ -199,7 +200,7 @@ def rigid_modes_reproduced():
     """On a floating body Phi contains the six rigid-body modes (to round-off), with given boxes
     and with METIS subdomains on two ranks; CG with the null space attached converges."""
     for opts, np in ((["-boxes", 3, "-n", 9], 1), (["-pc_gdsw_subdomains", 5, "-n", 9], 2)):
-        out = run([ELASTICITY, "-floating", "-check_phi"] + opts, np)
+        out = run([DIAGNOSTICS, "-floating", "-check_phi"] + opts, np)
         err = float(re.search(r"max relative error (\S+)", out).group(1))
         between(err, 0, 1e-10, "rigid-mode reproduction error")
         its = int(re.search(r"iterations (\d+) reason CONVERGED", out).group(1))
@@ -240,7 +241,7 @@ def metis_connected():
     largest joins a neighbouring part, so every nonoverlapping subdomain is connected in the
     matrix graph (searched by the driver, independently of the PC), on 1 and 2 ranks."""
     for np in (1, 2):
-        out = run([ELASTICITY, "-n", "8", "-pc_gdsw_subdomain_size", "30", "-report_subdomains", "-info"], np)
+        out = run([DIAGNOSTICS, "-n", "8", "-pc_gdsw_subdomain_size", "30", "-report_subdomains", "-info"], np)
         joined = [int(k) for k in re.findall(r"(\d+) disconnected pieces of METIS's parts joined", out)]
         m = re.search(r"subdomains (\d+) nonoverlapping dofs \d+ overlapping dofs \d+ connected (\d+)", out)
         its = int(re.search(r"iterations (\d+) reason CONVERGED", out).group(1))
@@ -284,9 +285,9 @@ def reuse_new_values():
     opts = ["-n", 12, "-boxes", 3, "-jump_boxes", 2, "-pc_gdsw_combination", "additive"]
     fresh = elasticity(*opts, "-jump", 1000)["iterations"]
     for np in (1, 2):
-        again = elasticity(*opts, "-resolve_jump", 1000, np=np)[1]["iterations"]
+        again = elasticity(*opts, "-resolve_jump", 1000, np=np, driver=DIAGNOSTICS)[1]["iterations"]
         assert again == fresh, (again, fresh)
-    kept = elasticity(*opts, "-resolve_jump", 1000, "-pc_gdsw_reuse_coarse_basis")[1]["iterations"]
+    kept = elasticity(*opts, "-resolve_jump", 1000, "-pc_gdsw_reuse_coarse_basis", driver=DIAGNOSTICS)[1]["iterations"]
     between(kept, fresh + 2, 2 * fresh, "iterations with the old coarse basis")
 
 
@@ -305,7 +306,7 @@ def coarse_operator_kept_basis():
     for np in (1, 2):
         for comb in ("additive", "symmetric_multiplicative"):
             for opts, setups in ((kept, 2), (inexact, 1)):
-                out = run([ELASTICITY, "-check_coarse", "-pc_gdsw_combination", comb] + [str(o) for o in opts], np)
+                out = run([DIAGNOSTICS, "-check_coarse", "-pc_gdsw_combination", comb] + [str(o) for o in opts], np)
                 diffs = [float(d) for d in re.findall(r"relative difference to Phi\^T A Phi (\S+);", out)]
                 assert len(diffs) == setups, (opts, out[-2000:])
                 for d in diffs:
@@ -327,7 +328,7 @@ def reuse_new_dirichlet_rows():
         for extra in (["-pc_gdsw_subdomains", 4], ["-boxes", 3]):
             opts = ["-n", 12, *extra]
             fresh = elasticity(*opts, "-clamp_both", np=np)
-            out = run([ELASTICITY, *opts, "-resolve_clamp_both", "-ksp_view", "-info", ":pc"], np)
+            out = run([DIAGNOSTICS, *opts, "-resolve_clamp_both", "-ksp_view", "-info", ":pc"], np)
             excluded = [int(x) for x in re.findall(r"(\d+) Dirichlet dofs excluded", out)]
             assert excluded == [3 * 13 * 13, 2 * 3 * 13 * 13], (np, extra, excluded)
             assert "Dirichlet rows changed with the same pattern" in out, out[-2000:]
@@ -901,8 +902,8 @@ def api_petsc_reinit():
 
 
 def subdomain_dofs(*opts, np=1):
-    """(iterations, nonoverlapping dofs, overlapping dofs) of the elasticity driver."""
-    out = run([ELASTICITY, "-report_subdomains"] + [str(o) for o in opts], np)
+    """(iterations, nonoverlapping dofs, overlapping dofs) of the elasticity problem."""
+    out = run([DIAGNOSTICS, "-report_subdomains"] + [str(o) for o in opts], np)
     its = int(re.search(r"iterations (\d+) reason CONVERGED", out).group(1))
     m = re.search(r"subdomains \d+ nonoverlapping dofs (\d+) overlapping dofs (\d+)", out)
     return its, int(m.group(1)), int(m.group(2))
@@ -948,7 +949,7 @@ def overlap_two():
 
 
 def check_coarse(*opts, np=1):
-    out = run([ELASTICITY, "-check_coarse"] + [str(o) for o in opts], np)
+    out = run([DIAGNOSTICS, "-check_coarse"] + [str(o) for o in opts], np)
     m = re.search(r"coarse operator (\d+) x (\d+) relative difference to Phi\^T A Phi (\S+); coarse solver prefix (\S+) ksp (\S+) pc (\S+) operator (\S+)", out)
     assert m, "no coarse operator line"
     return out, m
@@ -1011,7 +1012,7 @@ def elasticity_2d():
     assert its[4, 1] <= 1.15 * its[2, 1], its
     between(its[4, 1], 10, 25, "GDSW CG iterations, 2D, 16 boxes")
     for rot, lo, hi in ((1, 0, 1e-10), (0, 1e-2, 10)):
-        out = run([ELASTICITY, "-dim", 2, "-n", 12, "-boxes", 3, "-floating", "-check_phi", "-pc_gdsw_rotations", rot, "-ksp_max_it", 2000])
+        out = run([DIAGNOSTICS, "-dim", 2, "-n", 12, "-boxes", 3, "-floating", "-check_phi", "-pc_gdsw_rotations", rot, "-ksp_max_it", 2000])
         between(float(re.search(r"max relative error (\S+)", out).group(1)), lo, hi, f"2D rigid-mode reproduction error, rotations {rot}")
 
 

@@ -13,11 +13,6 @@ static const char help[] = "Q1 linear elasticity on the unit cube (or square: pl
                            "  -nullspace <near>  near: MatSetNearNullSpace(rigid modes); coords: PCSetCoordinates; none\n"
                            "  -floating          no Dirichlet condition (the null space is attached to the operator)\n"
                            "  -clamp_both        clamp x = 1 too\n"
-                           "  -check_phi         report how well the coarse basis reproduces the rigid-body modes\n"
-                           "  -check_coarse      compare the coarse operator with Phi^T (A Phi) and report the coarse solver (AIJ only; after each set-up)\n"
-                           "  -report_subdomains report the dofs of all nonoverlapping and of all overlapping subdomains, and how many of the former are connected\n"
-                           "  -resolve_jump <0>  then reassemble with this -jump (same pattern) and solve again\n"
-                           "  -resolve_clamp_both then reassemble with x = 1 clamped too (more Dirichlet rows, same pattern) and solve again\n"
                            "  -mat_type <aij>    any assembled type (aij, baij, sbaij), or is (MATIS: each rank's element layers are its subdomain, for PCBDDC)\n";
 
 #include <petscgdsw.h>
@@ -28,6 +23,7 @@ struct Problem {
   PetscInt  dim = 3, n = 8, boxes = 0, boxOverlap = -1, jumpBoxes = 2;
   PetscReal E = 1.0, nu = 0.3, jump = 1.0;
   PetscBool floating = PETSC_FALSE, clampBoth = PETSC_FALSE;
+  char      nullspace[16] = "near"; /* near: MatSetNearNullSpace(); coords: PCSetCoordinates(); none */
   PetscInt  k0, k1; /* node layers of the last coordinate (z in 3D, y in 2D) owned by this rank */
 };
 
@@ -173,162 +169,6 @@ static PetscErrorCode BoxSubdomains(const Problem &p, std::vector<IS> &boxes, st
   PetscFunctionReturn(0);
 }
 
-/* max over rigid modes z of |Phi c - z| / |z| with c the least-squares coefficients */
-static PetscErrorCode CheckPhi(PC pc, MatNullSpace rigid)
-{
-  Mat        Phi, PtP;
-  KSP        ksp;
-  PetscInt   nv;
-  const Vec *z;
-  PetscBool  hasConst;
-  Vec        c, Ptz, r;
-  PetscReal  worst = 0;
-
-  PetscFunctionBegin;
-  PetscCall(PCGDSWGetCoarseBasis(pc, &Phi));
-  PetscCall(MatTransposeMatMult(Phi, Phi, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &PtP));
-  PetscCall(KSPCreate(PETSC_COMM_WORLD, &ksp));
-  PetscCall(KSPSetOperators(ksp, PtP, PtP));
-  PetscCall(KSPSetType(ksp, KSPCG));
-  PetscCall(KSPSetTolerances(ksp, 1e-14, 1e-30, PETSC_DEFAULT, 2000));
-  PetscCall(MatCreateVecs(Phi, &c, &r));
-  PetscCall(VecDuplicate(c, &Ptz));
-  PetscCall(MatNullSpaceGetVecs(rigid, &hasConst, &nv, &z));
-  for (PetscInt k = 0; k < nv; k++) {
-    PetscReal nr, nz;
-    PetscCall(MatMultTranspose(Phi, z[k], Ptz));
-    PetscCall(KSPSolve(ksp, Ptz, c));
-    PetscCall(MatMult(Phi, c, r));
-    PetscCall(VecAXPY(r, -1.0, z[k]));
-    PetscCall(VecNorm(r, NORM_2, &nr));
-    PetscCall(VecNorm(z[k], NORM_2, &nz));
-    worst = std::max(worst, nr / nz);
-  }
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "rigid-body modes reproduced by Phi: max relative error %.3e\n", (double)worst));
-  PetscCall(VecDestroy(&c));
-  PetscCall(VecDestroy(&Ptz));
-  PetscCall(VecDestroy(&r));
-  PetscCall(KSPDestroy(&ksp));
-  PetscCall(MatDestroy(&PtP));
-  PetscFunctionReturn(0);
-}
-
-/* The coarse operator against an independent product Phi^T (A Phi), the coarse solver as the
-   options made it, and for the balanced combination M A Phi = Phi. */
-static PetscErrorCode CheckCoarse(PC pc, Mat A)
-{
-  Mat         Phi, A0, AP, PtAP, K;
-  KSP         ksp;
-  PC          kpc;
-  KSPType     ktype;
-  PCType      ptype;
-  const char *prefix;
-  PetscInt    m, n;
-  PetscReal   diff, norm;
-  PCCompositeType comb;
-
-  PetscFunctionBegin;
-  PetscCall(PCGDSWGetCoarseBasis(pc, &Phi));
-  PetscCall(PCGDSWGetCoarseOperator(pc, &A0));
-  PetscCall(PCGDSWGetCoarseKSP(pc, &ksp));
-  PetscCall(MatMatMult(A, Phi, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &AP));
-  PetscCall(MatTransposeMatMult(Phi, AP, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &PtAP));
-  PetscCall(MatNorm(PtAP, NORM_FROBENIUS, &norm));
-  PetscCall(MatAXPY(PtAP, -1.0, A0, DIFFERENT_NONZERO_PATTERN));
-  PetscCall(MatNorm(PtAP, NORM_FROBENIUS, &diff));
-  PetscCall(MatGetSize(A0, &m, &n));
-  PetscCall(KSPGetOperators(ksp, &K, nullptr));
-  PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
-  PetscCall(KSPGetType(ksp, &ktype));
-  PetscCall(KSPGetPC(ksp, &kpc));
-  PetscCall(PCGetType(kpc, &ptype));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "coarse operator %" PetscInt_FMT " x %" PetscInt_FMT " relative difference to Phi^T A Phi %.3e; coarse solver prefix %s ksp %s pc %s operator %s\n", m, n, (double)(diff / norm), prefix, ktype, ptype,
-                        K == A0 ? "A0" : "other"));
-  PetscCall(MatDestroy(&AP));
-  PetscCall(MatDestroy(&PtAP));
-  PetscCall(PCGDSWGetCombinationType(pc, &comb));
-  if (comb == PC_COMPOSITE_SYMMETRIC_MULTIPLICATIVE) { /* M A v = v for v = Phi c: the coarse space is solved exactly */
-    Vec c, v, Av, z;
-    PetscReal nv;
-    PetscCall(MatCreateVecs(Phi, &c, &v));
-    PetscCall(VecDuplicate(v, &Av));
-    PetscCall(VecDuplicate(v, &z));
-    PetscCall(VecSetRandom(c, nullptr));
-    PetscCall(MatMult(Phi, c, v));
-    PetscCall(MatMult(A, v, Av));
-    PetscCall(PCApply(pc, Av, z));
-    PetscCall(VecAXPY(z, -1.0, v));
-    PetscCall(VecNorm(z, NORM_2, &diff));
-    PetscCall(VecNorm(v, NORM_2, &nv));
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "balanced combination: |M A Phi c - Phi c| / |Phi c| %.3e\n", (double)(diff / nv)));
-    PetscCall(VecDestroy(&c));
-    PetscCall(VecDestroy(&v));
-    PetscCall(VecDestroy(&Av));
-    PetscCall(VecDestroy(&z));
-  }
-  PetscFunctionReturn(0);
-}
-
-/* Whether a set of dofs is connected in the graph of A (A(S, S) extracted, depth-first search).
-   Collective: every rank calls it, with an empty set if it has none. */
-static PetscErrorCode Connected(Mat A, IS S, PetscBool *connected)
-{
-  Mat            *sub;
-  const PetscInt *ia, *ja;
-  PetscInt        n;
-  PetscBool       done;
-
-  PetscFunctionBegin;
-  PetscCall(MatCreateSubMatrices(A, 1, &S, &S, MAT_INITIAL_MATRIX, &sub));
-  PetscCall(MatGetRowIJ(sub[0], 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
-  std::vector<char>     seen(n, 0);
-  std::vector<PetscInt> stack;
-  PetscInt              reached = 0;
-  if (n) seen[0] = 1, stack.push_back(0);
-  while (!stack.empty()) {
-    const PetscInt a = stack.back();
-    stack.pop_back();
-    reached++;
-    for (PetscInt k = ia[a]; k < ia[a + 1]; k++)
-      if (!seen[ja[k]]) seen[ja[k]] = 1, stack.push_back(ja[k]);
-  }
-  *connected = (PetscBool)(reached == n);
-  PetscCall(MatRestoreRowIJ(sub[0], 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
-  PetscCall(MatDestroySubMatrices(1, &sub));
-  PetscFunctionReturn(0);
-}
-
-/* The dofs of all nonoverlapping and of all overlapping subdomains, as the PC uses them, and how
-   many of the nonoverlapping ones are connected in the graph of A. */
-static PetscErrorCode ReportSubdomains(PC pc, Mat A)
-{
-  PetscInt n, local[4] = {0, 0, 0, 0}, total[4];
-  IS      *non, *ovl;
-
-  PetscFunctionBegin;
-  PetscCall(PCGDSWGetSubdomains(pc, &n, &non, &ovl));
-  local[0] = n;
-  for (PetscInt i = 0; i < n; i++) {
-    PetscInt a, b;
-    PetscCall(ISGetLocalSize(non[i], &a));
-    PetscCall(ISGetLocalSize(ovl[i], &b));
-    local[1] += a, local[2] += b;
-  }
-  PetscInt nmax;
-  IS       empty;
-  PetscCallMPI(MPIU_Allreduce(&n, &nmax, 1, MPIU_INT, MPI_MAX, PETSC_COMM_WORLD));
-  PetscCall(ISCreateStride(PETSC_COMM_SELF, 0, 0, 1, &empty));
-  for (PetscInt i = 0; i < nmax; i++) {
-    PetscBool connected;
-    PetscCall(Connected(A, i < n ? non[i] : empty, &connected));
-    local[3] += i < n && connected;
-  }
-  PetscCall(ISDestroy(&empty));
-  PetscCallMPI(MPIU_Allreduce(local, total, 4, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "subdomains %" PetscInt_FMT " nonoverlapping dofs %" PetscInt_FMT " overlapping dofs %" PetscInt_FMT " connected %" PetscInt_FMT "\n", total[0], total[1], total[2], total[3]));
-  PetscFunctionReturn(0);
-}
-
 /* One summary line per solve: what the tests and benchmarks read. */
 static PetscErrorCode Report(KSP ksp, Mat A, PetscLogDouble setup, PetscLogDouble solve)
 {
@@ -356,19 +196,10 @@ static PetscErrorCode Report(KSP ksp, Mat A, PetscLogDouble setup, PetscLogDoubl
   PetscFunctionReturn(0);
 }
 
-int main(int argc, char **argv)
+/* The problem's options: the mesh, the material, the constraint and how the null space reaches the PC. */
+static PetscErrorCode ProblemSetFromOptions(Problem &p)
 {
-  Problem     p;
-  PetscMPIInt rank, size;
-  char        nsp[16] = "near";
-  PetscBool   checkPhi = PETSC_FALSE, checkCoarse = PETSC_FALSE, reportSubdomains = PETSC_FALSE;
-  PetscReal   resolveJump = 0;
-  PetscBool   resolveClamp = PETSC_FALSE;
-
-  PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
-  PetscCall(PCGDSWRegister());
-  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
-  PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
+  PetscFunctionBegin;
   PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "Elasticity test problem", nullptr);
   PetscCall(PetscOptionsInt("-dim", "2 or 3", nullptr, p.dim, &p.dim, nullptr));
   PetscCall(PetscOptionsInt("-n", "elements per direction", nullptr, p.n, &p.n, nullptr));
@@ -378,123 +209,135 @@ int main(int argc, char **argv)
   PetscCall(PetscOptionsReal("-nu", "Poisson ratio", nullptr, p.nu, &p.nu, nullptr));
   PetscCall(PetscOptionsReal("-jump", "Young's modulus factor on every other box", nullptr, p.jump, &p.jump, nullptr));
   PetscCall(PetscOptionsInt("-jump_boxes", "boxes per direction of the coefficient checkerboard", nullptr, p.jumpBoxes, &p.jumpBoxes, nullptr));
-  PetscCall(PetscOptionsString("-nullspace", "near, coords or none", nullptr, nsp, nsp, sizeof(nsp), nullptr));
+  PetscCall(PetscOptionsString("-nullspace", "near, coords or none", nullptr, p.nullspace, p.nullspace, sizeof(p.nullspace), nullptr));
   PetscCall(PetscOptionsBool("-floating", "no Dirichlet condition", nullptr, p.floating, &p.floating, nullptr));
   PetscCall(PetscOptionsBool("-clamp_both", "clamp x = 1 too", nullptr, p.clampBoth, &p.clampBoth, nullptr));
-  PetscCall(PetscOptionsBool("-check_phi", "check that Phi reproduces the rigid-body modes", nullptr, checkPhi, &checkPhi, nullptr));
-  PetscCall(PetscOptionsBool("-check_coarse", "compare the coarse operator with Phi^T (A Phi), report the coarse solver", nullptr, checkCoarse, &checkCoarse, nullptr));
-  PetscCall(PetscOptionsBool("-report_subdomains", "report the dofs of the subdomains", nullptr, reportSubdomains, &reportSubdomains, nullptr));
-  PetscCall(PetscOptionsReal("-resolve_jump", "reassemble with this jump and solve again (0: no)", nullptr, resolveJump, &resolveJump, nullptr));
-  PetscCall(PetscOptionsBool("-resolve_clamp_both", "reassemble with x = 1 clamped too and solve again", nullptr, resolveClamp, &resolveClamp, nullptr));
   PetscOptionsEnd();
   PetscCheck(p.dim == 2 || p.dim == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-dim %" PetscInt_FMT ": use 2 or 3", p.dim);
   PetscCheck(p.n >= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-n %" PetscInt_FMT ": need at least one element per direction", p.n);
   PetscCheck(p.boxes >= 0 && p.boxes <= p.n, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-boxes %" PetscInt_FMT ": must be between 0 and -n %" PetscInt_FMT, p.boxes, p.n);
-  PetscCheck(!strcmp(nsp, "near") || !strcmp(nsp, "coords") || !strcmp(nsp, "none"), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-nullspace %s: use near, coords or none", nsp);
+  PetscCheck(!strcmp(p.nullspace, "near") || !strcmp(p.nullspace, "coords") || !strcmp(p.nullspace, "none"), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-nullspace %s: use near, coords or none", p.nullspace);
+  PetscFunctionReturn(0);
+}
 
-  /* rows: node layers of the last coordinate, split evenly over the ranks */
+struct System {
+  Mat          A;
+  Vec          b, x, coords; /* coords: of the owned nodes, dim per node */
+  MatNullSpace rigid;        /* the rigid-body modes */
+};
+
+/* The assembled and constrained system, its rows split over the ranks in layers of the last coordinate. */
+static PetscErrorCode SystemCreate(Problem &p, System &s)
+{
+  PetscMPIInt rank, size;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+  PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
   const PetscInt layers = p.n + 1, layer = LayerSize(p), dim = p.dim, nblocks = dim == 3 ? 27 : 9;
   p.k0 = layers * rank / size, p.k1 = layers * (rank + 1) / size;
   const PetscInt nloc = (p.k1 - p.k0) * layer;
-  Mat A;
-  Vec b, x, coords;
-  PetscCall(MatCreate(PETSC_COMM_WORLD, &A));
-  PetscCall(MatSetSizes(A, dim * nloc, dim * nloc, PETSC_DETERMINE, PETSC_DETERMINE));
-  PetscCall(MatSetBlockSize(A, dim));
-  PetscCall(MatSetType(A, MATAIJ));
-  PetscCall(MatSetFromOptions(A));
-  PetscCall(SubassembledLayout(p, A));
-  PetscCall(MatSeqAIJSetPreallocation(A, dim * nblocks, nullptr));
-  PetscCall(MatMPIAIJSetPreallocation(A, dim * nblocks, nullptr, dim * nblocks, nullptr));
-  PetscCall(MatSeqBAIJSetPreallocation(A, dim, nblocks, nullptr));
-  PetscCall(MatMPIBAIJSetPreallocation(A, dim, nblocks, nullptr, nblocks, nullptr));
-  PetscCall(MatSeqSBAIJSetPreallocation(A, dim, nblocks, nullptr));
-  PetscCall(MatMPISBAIJSetPreallocation(A, dim, nblocks, nullptr, nblocks, nullptr));
-  {
-    PetscBool sbaij;
-    PetscCall(PetscObjectTypeCompareAny((PetscObject)A, &sbaij, MATSEQSBAIJ, MATMPISBAIJ, ""));
-    if (sbaij) PetscCall(MatSetOption(A, MAT_IGNORE_LOWER_TRIANGULAR, PETSC_TRUE));
-  }
-  PetscCall(MatCreateVecs(A, &x, &b));
-  PetscCall(Assemble(p, A, b));
+  PetscCall(MatCreate(PETSC_COMM_WORLD, &s.A));
+  PetscCall(MatSetSizes(s.A, dim * nloc, dim * nloc, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetBlockSize(s.A, dim));
+  PetscCall(MatSetType(s.A, MATAIJ));
+  PetscCall(MatSetFromOptions(s.A));
+  PetscCall(SubassembledLayout(p, s.A));
+  PetscCall(MatSeqAIJSetPreallocation(s.A, dim * nblocks, nullptr));
+  PetscCall(MatMPIAIJSetPreallocation(s.A, dim * nblocks, nullptr, dim * nblocks, nullptr));
+  PetscCall(MatSeqBAIJSetPreallocation(s.A, dim, nblocks, nullptr));
+  PetscCall(MatMPIBAIJSetPreallocation(s.A, dim, nblocks, nullptr, nblocks, nullptr));
+  PetscCall(MatSeqSBAIJSetPreallocation(s.A, dim, nblocks, nullptr));
+  PetscCall(MatMPISBAIJSetPreallocation(s.A, dim, nblocks, nullptr, nblocks, nullptr));
+  PetscBool sbaij;
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)s.A, &sbaij, MATSEQSBAIJ, MATMPISBAIJ, ""));
+  if (sbaij) PetscCall(MatSetOption(s.A, MAT_IGNORE_LOWER_TRIANGULAR, PETSC_TRUE));
+  PetscCall(MatCreateVecs(s.A, &s.x, &s.b));
+  PetscCall(Assemble(p, s.A, s.b));
 
-  /* coordinates of the owned nodes */
-  PetscCall(VecCreate(PETSC_COMM_WORLD, &coords));
-  PetscCall(VecSetSizes(coords, dim * nloc, PETSC_DECIDE));
-  PetscCall(VecSetBlockSize(coords, dim));
-  PetscCall(VecSetFromOptions(coords));
-  {
-    PetscScalar *c;
-    PetscCall(VecGetArray(coords, &c));
-    for (PetscInt q = 0; q < nloc; q++)
-      for (PetscInt d = 0, g = p.k0 * layer + q; d < dim; d++, g /= p.n + 1) c[dim * q + d] = (g % (p.n + 1)) / (PetscReal)p.n;
-    PetscCall(VecRestoreArray(coords, &c));
-  }
-  MatNullSpace rigid;
-  PetscCall(MatNullSpaceCreateRigidBody(coords, &rigid));
-  if (!strcmp(nsp, "near")) PetscCall(MatSetNearNullSpace(A, rigid));
+  PetscCall(VecCreate(PETSC_COMM_WORLD, &s.coords));
+  PetscCall(VecSetSizes(s.coords, dim * nloc, PETSC_DECIDE));
+  PetscCall(VecSetBlockSize(s.coords, dim));
+  PetscCall(VecSetFromOptions(s.coords));
+  PetscScalar *c;
+  PetscCall(VecGetArray(s.coords, &c));
+  for (PetscInt q = 0; q < nloc; q++)
+    for (PetscInt d = 0, g = p.k0 * layer + q; d < dim; d++, g /= p.n + 1) c[dim * q + d] = (g % (p.n + 1)) / (PetscReal)p.n;
+  PetscCall(VecRestoreArray(s.coords, &c));
+  PetscCall(MatNullSpaceCreateRigidBody(s.coords, &s.rigid));
+  /* PCGDSW builds its coarse space from the operator's near-null space, or else from the coordinates (SolverCreate()) */
+  if (!strcmp(p.nullspace, "near")) PetscCall(MatSetNearNullSpace(s.A, s.rigid));
+  if (p.floating) PetscCall(MatSetNullSpace(s.A, s.rigid));
+  PetscCall(Constrain(p, s.A, s.b, s.x, s.rigid));
+  PetscFunctionReturn(0);
+}
 
-  if (p.floating) PetscCall(MatSetNullSpace(A, rigid));
-  PetscCall(Constrain(p, A, b, x, rigid));
+/* CG preconditioned by PCGDSW, which the options may change. What the application knows and the
+   PC cannot find in the matrix: the node coordinates, and the mesh's subdomains (element boxes). */
+static PetscErrorCode SolverCreate(const Problem &p, const System &s, KSP *ksp, std::vector<IS> &boxes, std::vector<IS> &grown)
+{
+  PC pc;
 
-  KSP ksp;
-  PC  pc;
-  PetscCall(KSPCreate(PETSC_COMM_WORLD, &ksp));
-  PetscCall(KSPSetOperators(ksp, A, A));
-  PetscCall(KSPSetType(ksp, KSPCG));
-  PetscCall(KSPSetTolerances(ksp, 1e-8, PETSC_DEFAULT, PETSC_DEFAULT, 1000));
-  PetscCall(KSPGetPC(ksp, &pc));
+  PetscFunctionBegin;
+  PetscCall(KSPCreate(PETSC_COMM_WORLD, ksp));
+  PetscCall(KSPSetOperators(*ksp, s.A, s.A));
+  PetscCall(KSPSetType(*ksp, KSPCG));
+  PetscCall(KSPSetTolerances(*ksp, 1e-8, PETSC_DEFAULT, PETSC_DEFAULT, 1000));
+  PetscCall(KSPGetPC(*ksp, &pc));
   PetscCall(PCSetType(pc, PCGDSW));
-  PetscCall(KSPSetFromOptions(ksp));
-  if (!strcmp(nsp, "coords")) {
+  PetscCall(KSPSetFromOptions(*ksp));
+  if (!strcmp(p.nullspace, "coords")) {
+    PetscInt           n;
     const PetscScalar *c;
-    std::vector<PetscReal> xyz(dim * nloc);
-    PetscCall(VecGetArrayRead(coords, &c));
-    for (PetscInt q = 0; q < dim * nloc; q++) xyz[q] = PetscRealPart(c[q]);
-    PetscCall(VecRestoreArrayRead(coords, &c));
-    PetscCall(PCSetCoordinates(pc, dim, nloc, xyz.data()));
+    PetscCall(VecGetLocalSize(s.coords, &n));
+    std::vector<PetscReal> xyz(n);
+    PetscCall(VecGetArrayRead(s.coords, &c));
+    for (PetscInt q = 0; q < n; q++) xyz[q] = PetscRealPart(c[q]);
+    PetscCall(VecRestoreArrayRead(s.coords, &c));
+    PetscCall(PCSetCoordinates(pc, p.dim, n / p.dim, xyz.data()));
   }
-  std::vector<IS> boxes, grown;
   if (p.boxes) {
     PetscCall(BoxSubdomains(p, boxes, grown));
     PetscCall(PCGDSWSetSubdomains(pc, (PetscInt)boxes.size(), boxes.data(), p.boxOverlap >= 0 ? grown.data() : nullptr));
   }
+  PetscFunctionReturn(0);
+}
 
-  PetscLogDouble t0, t1, t2;
+static PetscErrorCode SystemDestroy(System &s)
+{
+  PetscFunctionBegin;
+  PetscCall(MatNullSpaceDestroy(&s.rigid));
+  PetscCall(VecDestroy(&s.coords));
+  PetscCall(VecDestroy(&s.x));
+  PetscCall(VecDestroy(&s.b));
+  PetscCall(MatDestroy(&s.A));
+  PetscFunctionReturn(0);
+}
+
+int main(int argc, char **argv)
+{
+  Problem         p;
+  System          s;
+  KSP             ksp;
+  std::vector<IS> boxes, grown;
+  PetscLogDouble  t0, t1, t2;
+
+  PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
+  PetscCall(PCGDSWRegister()); /* or, without linking the library, -dll_append libpetscgdsw.so */
+  PetscCall(ProblemSetFromOptions(p));
+  PetscCall(SystemCreate(p, s));
+  PetscCall(SolverCreate(p, s, &ksp, boxes, grown));
   PetscCall(PetscTime(&t0));
   PetscCall(KSPSetUp(ksp));
   PetscCall(PetscTime(&t1));
-  PetscCall(KSPSolve(ksp, b, x));
+  PetscCall(KSPSolve(ksp, s.b, s.x));
   PetscCall(PetscTime(&t2));
-
-  PetscCall(Report(ksp, A, t1 - t0, t2 - t1));
-  if (checkPhi) PetscCall(CheckPhi(pc, rigid));
-  if (checkCoarse) PetscCall(CheckCoarse(pc, A));
-  if (reportSubdomains) PetscCall(ReportSubdomains(pc, A));
-  if (resolveJump > 0 || resolveClamp) { /* new values, same pattern: the PC refactors and re-extends */
-    if (resolveJump > 0) p.jump = resolveJump;
-    if (resolveClamp) p.clampBoth = PETSC_TRUE;
-    PetscCall(MatZeroEntries(A));
-    PetscCall(VecZeroEntries(b));
-    PetscCall(Assemble(p, A, b));
-    PetscCall(Constrain(p, A, b, x, rigid));
-    PetscCall(PetscTime(&t0));
-    PetscCall(PCSetUp(pc));
-    PetscCall(PetscTime(&t1));
-    PetscCall(KSPSolve(ksp, b, x));
-    PetscCall(PetscTime(&t2));
-    PetscCall(Report(ksp, A, t1 - t0, t2 - t1));
-    if (checkCoarse) PetscCall(CheckCoarse(pc, A));
-  }
+  PetscCall(Report(ksp, s.A, t1 - t0, t2 - t1));
 
   for (IS &is : boxes) PetscCall(ISDestroy(&is));
   for (IS &is : grown) PetscCall(ISDestroy(&is));
-  PetscCall(MatNullSpaceDestroy(&rigid));
   PetscCall(KSPDestroy(&ksp));
-  PetscCall(VecDestroy(&coords));
-  PetscCall(VecDestroy(&x));
-  PetscCall(VecDestroy(&b));
-  PetscCall(MatDestroy(&A));
+  PetscCall(SystemDestroy(s));
   PetscCall(PetscFinalize());
   return 0;
 }
