@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "block.h"
-#include "discretization/ale_map.h"
 #include "discretization/fields.h"
 #include <petscsf.h>
 
@@ -9,9 +8,9 @@ namespace fsi {
 PetscErrorCode CouplingBlock::Wire(const std::vector<Block *> &scene)
 {
   PetscFunctionBegin;
-  structure = FindBlock<StructureBlock>(scene, "structure");
-  fluid     = FindBlock<FluidBlock>(scene, "fluid");
-  geometry  = FindBlock<GeometryBlock>(scene, "geometry");
+  structure = FindBlock(scene, "structure");
+  fluid     = FindBlock(scene, "fluid");
+  geometry  = FindBlock(scene, "geometry");
   PetscCheck(structure && fluid && geometry, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-blocks: the coupling ties structure, fluid and geometry: name all four");
   PetscFunctionReturn(0);
 }
@@ -20,16 +19,18 @@ PetscErrorCode CouplingBlock::Check() const
 {
   PetscFunctionBegin;
   PetscCheck(sc.Dynamic(), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-dt 0: the coupled problem is dynamic (u = d_t d_s on the interface); give a time step");
-  PetscCheck(structure->opt.region[0], PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_region: name the wall's group (the fluid's cells are not the wall's)");
-  for (const auto &g : SplitList(fluid->opt.noslip))
-    PetscCheck(g.substr(0, g.find(':')) != geometry->opt.interface, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_noslip %s: on the interface %s the fluid moves with the wall (the coupling's u = d_t d_s); remove it from -fluid_noslip", fluid->opt.noslip, geometry->opt.interface);
+  const std::string noslip = fluid->Group("noslip"), interface = geometry->Group("interface");
+  PetscCheck(!structure->Region().empty(), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_region: name the wall's group (the fluid's cells are not the wall's)");
+  PetscCheck(!fluid->Region().empty(), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_region: name the fluid's group (the wall's cells are not the fluid's)");
+  for (const auto &g : SplitList(noslip.c_str()))
+    PetscCheck(g.substr(0, g.find(':')) != interface, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_noslip %s: on the interface %s the fluid moves with the wall (the coupling's u = d_t d_s); remove it from -fluid_noslip", noslip.c_str(), interface.c_str());
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CouplingBlock::AddFields(DM dm)
 {
   PetscFunctionBegin;
-  PetscCall(AddLagrangeField(dm, "multiplier", geometry->opt.interface, 3, 2, &field));
+  PetscCall(AddLagrangeField(dm, "multiplier", geometry->Group("interface"), 3, 2, &field));
   PetscFunctionReturn(0);
 }
 
@@ -39,8 +40,8 @@ PetscErrorCode CouplingBlock::AddConditions(DM dm, Conditions &list)
   DMLabel                      fixed;
 
   PetscFunctionBegin;
-  PetscCall(ConstrainedComponents(dm, list, fluid->velocity, 3, u));
-  PetscCall(ConstrainedComponents(dm, list, structure->field, 3, d));
+  PetscCall(ConstrainedComponents(dm, list, fluid->Field("velocity"), 3, u));
+  PetscCall(ConstrainedComponents(dm, list, structure->Field("displacement"), 3, d));
   PetscCall(DMCreateLabel(dm, "multiplier_fixed"));
   PetscCall(DMGetLabel(dm, "multiplier_fixed", &fixed));
   for (const auto &pu : u) { /* value: the components fixed in both */
@@ -89,7 +90,7 @@ PetscErrorCode CouplingBlock::SetUp(DM dm)
   PetscSF         sf;
   PetscInt        pStart, pEnd, nleaves, bad = -1, gbad;
   const PetscInt *leaves;
-  const PetscInt  fields[4] = {field, fluid->velocity, structure->field, geometry->field};
+  const PetscInt  fields[4] = {field, fluid->Field("velocity"), structure->Field("displacement"), geometry->Field("geometry")};
 
   PetscFunctionBegin;
   PetscCall(DMGetLocalSection(dm, &local));
@@ -114,10 +115,8 @@ PetscErrorCode CouplingBlock::SetUp(DM dm)
     if (!ghost[p - pStart] && bad < 0) nodes.push_back(n);
   }
   PetscCallMPI(MPIU_Allreduce(&bad, &gbad, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)dm)));
-  PetscCheck(gbad < 0, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_WRONG, "-geometry_interface %s: the group's faces must lie between cells of -fluid_region %s and of -structure_region %s with a node of each at every interface node (a conforming interface); mesh point %" PetscInt_FMT " lacks one", geometry->opt.interface, fluid->opt.region, structure->opt.region, gbad);
-  DMLabel wall;
-  PetscCall(DMGetLabel(dm, geometry->opt.interface, &wall));
-  PetscCall(CellFacesCreate(dm, fluid->forms.velocity, wall, wallFaces));
+  PetscCheck(gbad < 0, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_WRONG, "-geometry_interface %s: the group's faces must lie between cells of -fluid_region %s and of -structure_region %s with a node of each at every interface node (a conforming interface); mesh point %" PetscInt_FMT " lacks one", geometry->Group("interface").c_str(),
+             fluid->Region().c_str(), structure->Region().c_str(), gbad);
   PetscFunctionReturn(0);
 }
 
@@ -207,96 +206,14 @@ PetscErrorCode CouplingBlock::Continuity(DM dm, PetscReal *velocity, PetscReal *
   PetscFunctionReturn(0);
 }
 
-/* The moved fluid region's volume int J dX (exact: J is a polynomial of degree 3) for the
-   local state x. */
-PetscErrorCode CouplingBlock::FluidVolume(DM dm, const PetscScalar *x, PetscReal *volume)
-{
-  const FieldCells &cells = geometry->forms.cells;
-  const P2Rule     &rule  = fluid->forms.rule;
-  PetscReal         sum   = 0;
-
-  PetscFunctionBegin;
-  for (PetscInt k = 0; k < cells.Size(); k++) {
-    PetscReal de[30];
-    Gather(cells, k, x, de);
-    for (PetscInt q = 0; q < rule.nq; q++) {
-      MovedPoint m;
-      sum += rule.w[q] * cells.geom[k].detE * MovePoint(cells.geom[k], de, &rule.lambda[4 * q], &rule.N[10 * q], m);
-    }
-  }
-  PetscCallMPI(MPIU_Allreduce(&sum, volume, 1, MPIU_REAL, MPIU_SUM, PetscObjectComm((PetscObject)dm)));
-  PetscFunctionReturn(0);
-}
-
-/* int_Gamma |d|^2 dA in the reference configuration for the local state x: d_f on the fluid's
-   interface faces, which equals d_s there. */
-PetscErrorCode CouplingBlock::InterfaceDisplacementSquared(DM dm, const PetscScalar *x, PetscReal *d2)
-{
-  PetscFunctionBegin;
-  PetscCall(FluidFaceNormSquared(dm, fluid->forms, geometry->forms.cells, wallFaces, x, d2));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CouplingBlock::AfterStep(DM dm, PetscInt, PetscReal t, Vec x)
-{
-  Balance b;
-
-  PetscFunctionBegin;
-  if (balance.empty()) /* the states before the first step recorded (the start, or a checkpoint's state) */
-    for (size_t j = 1; j < history->past.size(); j++) {
-      const PetscScalar *y;
-      PetscReal          v;
-      PetscCall(VecGetArrayRead(history->past[j], &y));
-      PetscCall(FluidVolume(dm, y, &v));
-      if (j == 1) PetscCall(InterfaceDisplacementSquared(dm, y, &d2Before));
-      PetscCall(VecRestoreArrayRead(history->past[j], &y));
-      before.push_back(v);
-    }
-  b.t = t;
-  PetscCall(FluidFlux(dm, fluid->forms, fluid->inletFaces, x, &b.in));
-  PetscCall(FluidFlux(dm, fluid->forms, fluid->outletFaces, x, &b.out));
-  PetscCall(FluidFlux(dm, fluid->forms, wallFaces, x, &b.wall));
-  {
-    const PetscScalar *y; /* past[0] is x with its essential values */
-    PetscCall(VecGetArrayRead(history->past[0], &y));
-    PetscCall(FluidVolume(dm, y, &b.volume));
-    PetscCall(InterfaceDisplacementSquared(dm, y, &b.d2));
-    PetscCall(VecRestoreArrayRead(history->past[0], &y));
-  }
-  b.in = -b.in; /* into the fluid */
-  balance.push_back(b);
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode CouplingBlock::Results(DM dm, Vec, PetscReal, RunReport &report)
 {
-  PetscReal velocity, geometric, mass = 0, rate = 0, inMax = 0, wallMax = 0;
+  PetscReal velocity, geometric;
 
   PetscFunctionBegin;
   PetscCall(Continuity(dm, &velocity, &geometric));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "interface continuity: max |u - d_t d_s| %.3e max |d_f - d_s| %.3e\n", (double)velocity, (double)geometric));
   report.results.insert(report.results.end(), {{"interface_velocity_jump", velocity}, {"interface_displacement_jump", geometric}});
-  /* volume balance: (1) inflow - outflow - int_G u.n = 0 (div u orthogonal to the constants);
-     (2) int_G u.n = dV/dt, V differenced by the time scheme's formula */
-  for (size_t k = 0; k < balance.size(); k++) {
-    const Balance &b = balance[k];
-    PetscReal      dV = history->first[0] * b.volume;
-    for (PetscInt j = 1; j < 3 && history->first[j] != 0; j++) dV += history->first[j] * ((PetscInt)k - j >= 0 ? balance[k - j].volume : before[j - k - 1]);
-    dV /= history->dt;
-    mass    = PetscMax(mass, PetscAbsReal(b.in - b.out - b.wall));
-    rate    = PetscMax(rate, PetscAbsReal(b.wall - dV));
-    inMax   = PetscMax(inMax, PetscAbsReal(b.in));
-    wallMax = PetscMax(wallMax, PetscAbsReal(b.wall));
-    PetscCall(PetscInfo(nullptr, "t %g inflow %g outflow %g interface %g dV/dt %g volume %g\n", (double)b.t, (double)b.in, (double)b.out, (double)b.wall, (double)dV, (double)b.volume));
-  }
-  if (balance.empty()) PetscFunctionReturn(0);
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "volume balance over %zu steps: max |inflow - outflow - interface flux| %.3e (max inflow %.3e); max |interface flux - dV/dt| %.3e (max interface flux %.3e)\n", balance.size(), (double)mass, (double)inMax, (double)rate, (double)wallMax));
-  report.results.insert(report.results.end(), {{"volume_balance", mass}, {"max_inflow", inMax}, {"volume_rate_mismatch", rate}, {"max_interface_flux", wallMax}});
-  /* ||d||_{L2(Gamma x (t0, T))} by the trapezoidal rule (second order: it does not cap BDF2's) */
-  PetscReal integral = 0, previous = d2Before;
-  for (const Balance &b : balance) integral += history->dt * (previous + b.d2) / 2, previous = b.d2;
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "interface displacement: L2 norm in space and time %.6e cm^2 s^1/2\n", (double)PetscSqrtReal(integral)));
-  report.results.push_back({"interface_displacement_l2", PetscSqrtReal(integral)});
   PetscFunctionReturn(0);
 }
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "cells.h"
 #include "discretization/ale_map.h"
-#include "io/files.h"
+#include "base/files.h"
 #include "mesh/mesh.h"
 #include <algorithm>
 #include <cstdio>

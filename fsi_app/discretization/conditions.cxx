@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "conditions.h"
+#include <algorithm>
+#include <iterator>
 #include "discretization/fields.h"
 #include "discretization/nodes.h"
 #include "mesh/mesh.h"
@@ -53,6 +55,14 @@ PetscErrorCode ConditionPoints(DM dm, const Condition &c, std::vector<PetscInt> 
   PetscCall(DMLabelDestroy(&closure));
   std::sort(points.begin(), points.end());
   points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (c.except) {
+    Condition             other;
+    std::vector<PetscInt> excluded, kept;
+    other.label = c.except;
+    PetscCall(ConditionPoints(dm, other, excluded));
+    std::set_difference(points.begin(), points.end(), excluded.begin(), excluded.end(), std::back_inserter(kept));
+    points.swap(kept);
+  }
   PetscFunctionReturn(0);
 }
 

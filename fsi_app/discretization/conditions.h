@@ -27,6 +27,7 @@ struct Condition {
   std::vector<PetscInt> values;          /* of the label; empty: every value */
   std::vector<PetscInt> comps;           /* components fixed; empty: all */
   NodalValue            value;           /* empty: zero */
+  DMLabel               except = nullptr; /* not on the closure of its points (the nodes another block's rows fix) */
 };
 
 /* In the order added: where two conditions fix the same dof, the later one's value is written. */

@@ -124,9 +124,8 @@ static void FaceResidual(const FluidForms &fb, const TractionGroup &tg, const Ce
   });
 }
 
-PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
+PetscErrorCode FluidResidual(FluidForms &fb, const PetscScalar *x, PetscScalar *f)
 {
-  const FluidForms                &fb = *(FluidForms *)ctx;
   std::vector<const PetscScalar *> past;
   PetscInt                         inverted = 0;
 
@@ -148,7 +147,7 @@ PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
       Scatter(fb.velocity, face.k, ru, f);
     }
   PetscCall(TimeHistoryRestorePast(fb.history, past));
-  ((FluidForms *)ctx)->inverted = inverted;
+  fb.inverted = inverted;
   PetscCall(ReportInverted(fb, inverted));
   PetscFunctionReturn(0);
 }
@@ -243,9 +242,8 @@ static void ForceGradient(const FluidForms &fb, const PetscReal x[3], PetscReal 
 
 /* Element matrix of the 30 velocity and 4 pressure dofs (rows and columns in that order), and
    with the shape derivatives their derivative in the cell's 30 mesh displacement dofs. */
-PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P)
+PetscErrorCode FluidJacobian(const FluidForms &fb, const PetscScalar *x, Mat P)
 {
-  const FluidForms                &fb = *(FluidForms *)ctx;
   const int                        n  = 34;
   std::vector<const PetscScalar *> past;
 

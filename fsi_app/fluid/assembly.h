@@ -5,7 +5,7 @@
      R_u(v) = int_{Omega_t} rho (d_t u + ((u - w) . grad) u) . v + 2 mu eps(u) : eps(v) - p div v - f . v
               - int_{faces_t} t . v
      R_p(q) = - int_{Omega_t} q div u
-   with d_t u the fully implicit difference (solver/time_history.h) of the nodal values, which
+   with d_t u the fully implicit difference (core/time_history.h) of the nodal values, which
    move with the mesh (the time derivative at fixed X), w the same difference of d_f (the mesh
    velocity), t a prescribed traction on groups of faces (natural: stress-free) and f a body
    force (manufactured solutions). The Jacobian is exact in (u, p), convection included, and
@@ -17,8 +17,8 @@
 #pragma once
 
 #include "discretization/cells.h"
-#include "solver/sparsity.h"
-#include "solver/time_history.h"
+#include "core/sparsity.h"
+#include "core/time_history.h"
 #include <functional>
 #include <petscsnes.h>
 
@@ -48,9 +48,10 @@ struct FluidForms {
   PetscBool                  shapeDerivatives = PETSC_FALSE; /* D_{d_f} R in the Jacobian */
 };
 
-/* BlockOps of solver/system.h (the context is the FluidForms). */
-PetscErrorCode FluidResidual(void *ctx, const PetscScalar *x, PetscScalar *f);
-PetscErrorCode FluidJacobian(void *ctx, const PetscScalar *x, Mat P);
+/* Its rows of the residual (added into the local f; the residual records inverted cells in
+   the forms) and of the Jacobian, for the local state x. */
+PetscErrorCode FluidResidual(FluidForms &fb, const PetscScalar *x, PetscScalar *f);
+PetscErrorCode FluidJacobian(const FluidForms &fb, const PetscScalar *x, Mat P);
 /* the entries FluidJacobian inserts */
 void FluidCouplings(const FluidForms &fb, Sparsity &s);
 

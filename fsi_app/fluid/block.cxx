@@ -3,7 +3,7 @@
 #include "discretization/conditions.h"
 #include "discretization/fields.h"
 #include "mesh/mesh.h"
-#include "solver/options.h"
+#include "base/options.h"
 #include "verification/errors.h"
 #include <string>
 
@@ -34,8 +34,14 @@ static PetscErrorCode MMSDirichletFaces(const FluidOptions &o, DM dm, DMLabel *f
 
 PetscErrorCode FluidBlock::Wire(const std::vector<Block *> &scene)
 {
-  geometry = FindBlock<GeometryBlock>(scene, "geometry");
+  mesh    = FindBlock(scene, "geometry");
+  coupled = (PetscBool)(mesh && FindBlock(scene, "coupling"));
   return 0;
+}
+
+std::string FluidBlock::Group(const std::string &role) const
+{
+  return role == "region" ? opt.region : role == "noslip" ? opt.noslip : role == "inlet" ? opt.inlet : role == "outlet" ? opt.outlet : "";
 }
 
 PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &problem)
@@ -57,7 +63,7 @@ PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &probl
   PetscCall(r.Real("-fluid_inlet_pressure", "normal stress: traction -p n on the faces of -fluid_inlet (dyn/cm^2)", &o.inletPressure, Any, PROBLEM));
   PetscCall(r.Real("-fluid_inlet_pressure_until", "the inlet pressure acts while t <= this (s); 0: always (default: -structure_pressure_until)", &o.pulseEnd, NonNegative, PROBLEM));
   PetscCall(r.Enum("-fluid_inlet_pressure_shape", "the inlet pressure over time: step (on at once) or cosine (p (1 - cos(2 pi t / T)) / 2 over [0, T], T = -fluid_inlet_pressure_until)", PulseShapeNames, &o.pulseShape, PROBLEM));
-  PetscCall(r.Reals("-fluid_inflow_velocity", "prescribed velocity ux,uy,uz on the faces of -fluid_inlet (cm/s; no-slip groups keep u = 0 on their nodes)", o.inflowVelocity, &n, &o.inflow, Any, PROBLEM));
+  PetscCall(r.Reals("-fluid_inflow_velocity", "prescribed velocity ux,uy,uz on the faces of -fluid_inlet (cm/s; no-slip groups keep u = 0 on their nodes; on a coupled wall the rim moves with the wall)", o.inflowVelocity, &n, &o.inflow, Any, PROBLEM));
   PetscCheck(!o.inflow || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_inflow_velocity: give ux,uy,uz (got %" PetscInt_FMT " values)", n);
   PetscCall(r.Points("-fluid_probes", "points x1,y1,z1,x2,... (at most 20, reference configuration) where the pressure is recorded every step (in the run report); with -fluid_inlet_pressure, when the pulse's front (half its pressure) passes each and the wave speed", o.probes));
   PetscCall(r.String("-fluid_inlet", "group of the inflow faces", o.inlet, sizeof(o.inlet), PROBLEM));
@@ -78,7 +84,7 @@ PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &probl
 PetscErrorCode FluidBlock::Check() const
 {
   PetscFunctionBegin;
-  PetscCheck(!geometry || geometry->Coupled() || !opt.noslip[0], PETSC_COMM_WORLD, PETSC_ERR_SUP, "-fluid_moving_mesh with -fluid_noslip %s: a wall that moves needs u = w (the mesh velocity) there, which the coupling to the structure will impose; until then a moving mesh takes the manufactured flows' boundary values (-mms) and -fluid_noslip must be empty", opt.noslip);
+  PetscCheck(!mesh || coupled || !opt.noslip[0], PETSC_COMM_WORLD, PETSC_ERR_SUP, "-blocks fluid,geometry with -fluid_noslip %s: a wall that moves needs u = w (the mesh velocity) there, which the coupling to the structure will impose; until then a moving mesh takes the manufactured flows' boundary values (-mms) and -fluid_noslip must be empty", opt.noslip);
   PetscFunctionReturn(0);
 }
 
@@ -99,14 +105,17 @@ PetscErrorCode FluidBlock::AddFields(DM dm)
   PetscCall(AddLagrangeField(dm, "velocity", opt.region, 3, 2, &velocity));
   PetscCall(AddLagrangeField(dm, "pressure", opt.region, 1, 1, &pressure));
   flow.kind = opt.mmsFlow, flow.rho = opt.rho, flow.mu = opt.mu, flow.ramp = opt.mmsRamp, flow.dynamic = sc.Dynamic();
-  flow.motion = geometry && !geometry->Coupled() ? &geometry->motion : nullptr;
+  flow.motion = mesh ? mesh->Motion() : nullptr;
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode FluidBlock::AddConditions(DM dm, Conditions &list)
 {
   PetscFunctionBegin;
-  if (opt.inflow) PetscCall(AddDirichlet(dm, list, opt.inlet, velocity, "-fluid_inlet", opt.inflowVelocity)); /* first: the no-slip rim wins */
+  if (opt.inflow) { /* first: the no-slip rim wins; on a coupled wall, the rim moves with the wall (the coupling's u = d_t d_s) */
+    PetscCall(AddDirichlet(dm, list, opt.inlet, velocity, "-fluid_inlet", opt.inflowVelocity));
+    if (coupled) PetscCall(DMGetLabel(dm, mesh->Group("interface").c_str(), &list.back().except));
+  }
   PetscCall(AddDirichlet(dm, list, opt.noslip, velocity, "-fluid_noslip"));
   if (sc.mms) {
     Condition      c;
@@ -128,7 +137,7 @@ PetscErrorCode FluidBlock::SetUp(DM dm)
   PetscCall(GetRegionLabel(dm, opt.region, &region));
   PetscCall(FieldCellsCreate(dm, region, velocity, fb.velocity));
   PetscCall(FieldCellsCreate(dm, region, pressure, fb.pressure));
-  fb.mesh = geometry ? &geometry->forms.cells : nullptr;
+  fb.mesh = mesh ? mesh->Cells("geometry") : nullptr;
   fb.rho = opt.rho, fb.mu = opt.mu, fb.shapeDerivatives = opt.shapeDerivatives;
   PetscCall(CreateP2Rule(5, fb.rule));
   PetscCall(CreateFaceRule(4, fb.faceRule));
@@ -147,6 +156,7 @@ PetscErrorCode FluidBlock::SetUp(DM dm)
     PetscCall(DMGetLabel(dm, g.first, &label));
     if (label) PetscCall(CellFacesCreate(dm, fb.velocity, label, *g.second));
   }
+  if (coupled) PetscCall(balance.SetUp(dm, fb, mesh->Group("interface").c_str()));
   if (!opt.probes.empty()) PetscCall(ProbesCreate(PetscObjectComm((PetscObject)dm), fb.pressure, opt.probes, "-fluid_probes", probes));
   if (sc.mms) {
     const FlowMMS *m = &flow;
@@ -189,7 +199,7 @@ PetscErrorCode FluidBlock::InitialState(DM dm, Vec x, PetscBool *set)
 void FluidBlock::Output(std::vector<OutputPart> &parts) const
 {
   OutputPart p{"fluid", &forms.velocity, {{"velocity", velocity}, {"pressure", pressure}}};
-  if (geometry) p.fields.push_back({"displacement", geometry->field}); /* the mesh's: named as the wall's, so Warp By Vector moves both parts */
+  if (mesh) p.fields.push_back({"displacement", mesh->Field("geometry")}); /* the mesh's: named as the wall's, so Warp By Vector moves both parts */
   parts.push_back(p);
 }
 
@@ -197,14 +207,17 @@ std::string FluidBlock::InvertedCause() const
 {
   char cause[256];
   if (!forms.inverted) return "";
-  if (geometry && geometry->Coupled()) return "a cell of the moved fluid mesh inverted (J <= 0): the wall moved too far in one step for the harmonic extension of its displacement";
-  PetscSNPrintf(cause, sizeof(cause), "a cell of the moved fluid mesh inverted (J <= 0): the prescribed interface displacement is too large for its harmonic extension; reduce -geometry_amplitude (%g now)", (double)geometry->opt.amplitude);
+  if (coupled) return "a cell of the moved fluid mesh inverted (J <= 0): the wall moved too far in one step for the harmonic extension of its displacement";
+  PetscSNPrintf(cause, sizeof(cause), "a cell of the moved fluid mesh inverted (J <= 0): the prescribed interface displacement is too large for its harmonic extension; reduce -geometry_amplitude (%g now)", (double)mesh->Motion()->a);
   return cause;
 }
 
 PetscErrorCode FluidBlock::AfterStep(DM dm, PetscInt, PetscReal t, Vec x)
 {
-  return probes.cell.empty() ? 0 : ProbesRecordGlobal(dm, forms.pressure, x, t, probes);
+  PetscFunctionBegin;
+  if (!probes.cell.empty()) PetscCall(ProbesRecordGlobal(dm, forms.pressure, x, t, probes));
+  if (coupled) PetscCall(balance.Record(dm, forms, inletFaces, outletFaces, t, x));
+  PetscFunctionReturn(0);
 }
 
 /* When the pulse's front (half the inlet pressure) passes each probe, and the speed: the least
@@ -242,7 +255,7 @@ PetscErrorCode FluidBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
   /* equal to the solver's tolerance without a moving wall: div u is orthogonal to the constants */
   PetscCall(FluidFlux(dm, forms, inletFaces, x, &in));
   PetscCall(FluidFlux(dm, forms, outletFaces, x, &out));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "flux inlet %.6e outlet %.6e\n", (double)in, (double)out));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "flux inlet %.6e outlet %.6e (int u.n with the outward normal: an inflow is negative)\n", (double)in, (double)out));
   report.results.insert(report.results.end(), {{"inlet_flux", in}, {"outlet_flux", out}});
   PetscCall(ComputeErrors(dm, forms.velocity, x, t, ZeroSolution, nullptr, e, forms.mesh)); /* the L2 norms: the error against zero */
   PetscCall(ComputeErrors(dm, forms.pressure, x, t, ZeroSolution, nullptr, ep, forms.mesh));
@@ -260,6 +273,7 @@ PetscErrorCode FluidBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
     report.results.insert(report.results.end(), {{"flux", Q}, {"flux_relative_error", PetscAbsReal(Q / exact - 1)}});
     PetscCall(ReportErrors("", e, report));
   }
+  if (coupled) PetscCall(balance.Report(dm, forms, report));
   if (!probes.cell.empty()) report.series.push_back({"pressure", &probes});
   if (!probes.cell.empty() && opt.inletPressure != 0) PetscCall(ReportArrivals(probes, opt.inletPressure / 2, report));
   PetscFunctionReturn(0);

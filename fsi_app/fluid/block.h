@@ -3,14 +3,16 @@
    ALE form on the mesh moved by the geometry block's d_f (or on the fixed mesh), its no-slip
    groups, inflow velocity or traction, and the exact data of the verification flows
    (Poiseuille, the manufactured flows of verification/mms.h); it reports the fluxes through
-   the inlet and outlet and the errors of the verification flows. */
+   the inlet and outlet, the errors of the verification flows, and on a mesh moved by a
+   coupled wall its volume balance (fluid/balance.h). */
 #pragma once
 
 #include "fluid/assembly.h"
+#include "fluid/balance.h"
 #include "discretization/probes.h"
-#include "geometry/block.h"
-#include "scene.h"
-#include "solver/block.h"
+#include "verification/mms.h"
+#include "core/scene.h"
+#include "core/block.h"
 
 namespace fsi {
 
@@ -45,15 +47,17 @@ public:
   PetscErrorCode ReadOptions(std::map<std::string, std::string> &problem) override;
   PetscErrorCode Check() const override;
   void           Groups(std::vector<GroupUse> &groups) const override;
-  std::string    Region() const override { return opt.region; }
+  std::string       Group(const std::string &role) const override;
+  PetscInt          Field(const std::string &name) const override { return name == "velocity" ? velocity : name == "pressure" ? pressure : -1; }
+  const FieldCells *Cells(const std::string &name) const override { return name == "velocity" ? &forms.velocity : name == "pressure" ? &forms.pressure : nullptr; }
 
   PetscErrorCode AddFields(DM dm) override;
   PetscErrorCode AddConditions(DM dm, Conditions &list) override;
   PetscErrorCode SetUp(DM dm) override;
   void           Attach(SNES snes, const TimeHistory *history) override { forms.snes = snes, forms.history = history; }
 
-  PetscErrorCode Residual(const PetscScalar *x, PetscScalar *f) override { return FluidResidual(&forms, x, f); }
-  PetscErrorCode Jacobian(const PetscScalar *x, Mat P) override { return FluidJacobian(&forms, x, P); }
+  PetscErrorCode Residual(const PetscScalar *x, PetscScalar *f) override { return FluidResidual(forms, x, f); }
+  PetscErrorCode Jacobian(const PetscScalar *x, Mat P) override { return FluidJacobian(forms, x, P); }
   void           Couplings(Sparsity &s) const override { FluidCouplings(forms, s); }
   PetscErrorCode SetTime(PetscReal t) override { return forms.time = t, 0; }
   PetscErrorCode InitialState(DM dm, Vec x, PetscBool *set) override;
@@ -63,21 +67,22 @@ public:
 
   void           Output(std::vector<OutputPart> &parts) const override;
   void           Unknowns(std::vector<std::pair<std::string, PetscInt>> &u) const override { u.insert(u.end(), {{"fluid", velocity}, {"pressure", pressure}}); }
-  PetscBool      Summary(Headline *h) const override { return *h = {"velocity", velocity, "solution_norm"}, PETSC_TRUE; }
+  PetscBool      Summary(Headline *h) const override { return *h = {"velocity", velocity, "solution_norm", PETSC_TRUE}, PETSC_TRUE; }
   std::string    InvertedCause() const override;
   PetscErrorCode AfterStep(DM dm, PetscInt step, PetscReal t, Vec x) override;
   PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) override;
 
+private:
+  const Scene          &sc;
   FluidOptions          opt;
   PetscInt              velocity = -1, pressure = -1;
   FluidForms            forms;
   FlowMMS               flow;                    /* the manufactured flow's data */
   std::vector<CellFace> inletFaces, outletFaces; /* the faces of the fluxes (empty: no such group) */
   Probes                probes;
-
-private:
-  const Scene         &sc;
-  const GeometryBlock *geometry = nullptr; /* the block whose d_f moves the mesh (nullptr: a fixed mesh) */
+  const Block          *mesh    = nullptr;      /* the geometry block, whose d_f moves the mesh (nullptr: a fixed mesh) */
+  PetscBool             coupled = PETSC_FALSE;  /* the mesh moves with a coupled wall */
+  VolumeBalance         balance;                /* coupled: the volume balance */
 };
 
 } // namespace fsi

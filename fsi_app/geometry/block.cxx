@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "block.h"
 #include "discretization/fields.h"
-#include "solver/options.h"
+#include "base/options.h"
 #include "verification/errors.h"
 
 namespace fsi {
 
 PetscErrorCode GeometryBlock::Wire(const std::vector<Block *> &scene)
 {
-  fluid      = FindBlock<Block>(scene, "fluid");
-  coupled    = (PetscBool)(FindBlock<Block>(scene, "coupling") != nullptr);
+  fluid      = FindBlock(scene, "fluid");
+  coupled    = (PetscBool)(FindBlock(scene, "coupling") != nullptr);
   movesFluid = (PetscBool)(fluid != nullptr);
   return 0;
 }
@@ -25,10 +25,15 @@ PetscErrorCode GeometryBlock::ReadOptions(std::map<std::string, std::string> &pr
   else PetscCall(r.String("-fluid_region", "physical group of the fluid's cells, where the mesh moves", o.region, sizeof(o.region), PROBLEM));
   PetscCall(r.String("-geometry_interface", "group where the fluid's mesh displacement is the structure's", o.interface, sizeof(o.interface), PROBLEM));
   PetscCall(r.String("-geometry_slip", "groups where the mesh slides: the listed components are zero (planar ends: group:z)", o.slip, sizeof(o.slip), PROBLEM));
-  PetscCall(r.Real("-geometry_amplitude", "amplitude a of the prescribed interface displacement a s(t) (x^2 - y^2, -2xy, 0) (-physics geometry, -fluid_moving_mesh)", &o.amplitude, Any, PROBLEM));
+  PetscCall(r.Real("-geometry_amplitude", "amplitude a of the prescribed interface displacement a s(t) (x^2 - y^2, -2xy, 0) (1/cm; -blocks geometry or fluid,geometry)", &o.amplitude, Any, PROBLEM));
   PetscCall(r.Real("-geometry_ramp", "the prescribed interface displacement rises as s(t) = sin^2(pi t / 2T) over this time T (s); 0: at once", &o.ramp, NonNegative, PROBLEM));
   PetscOptionsEnd();
   PetscFunctionReturn(0);
+}
+
+std::string GeometryBlock::Group(const std::string &role) const
+{
+  return role == "region" ? opt.region : role == "interface" ? opt.interface : "";
 }
 
 void GeometryBlock::Groups(std::vector<GroupUse> &groups) const

@@ -8,8 +8,8 @@
 
 #include "geometry/harmonic.h"
 #include "geometry/predictor.h"
-#include "scene.h"
-#include "solver/block.h"
+#include "core/scene.h"
+#include "core/block.h"
 #include "verification/mms.h"
 
 namespace fsi {
@@ -32,16 +32,17 @@ public:
   PetscErrorCode Wire(const std::vector<Block *> &scene) override;
   PetscErrorCode ReadOptions(std::map<std::string, std::string> &problem) override;
   void           Groups(std::vector<GroupUse> &groups) const override;
-  std::string    Region() const override { return opt.region; }
-  /* the interface rows are the coupling's */
-  PetscBool      Coupled() const { return coupled; }
+  std::string             Group(const std::string &role) const override;
+  PetscInt                Field(const std::string &name) const override { return name == "geometry" ? field : -1; }
+  const FieldCells       *Cells(const std::string &name) const override { return name == "geometry" ? &forms.cells : nullptr; }
+  const PrescribedMotion *Motion() const override { return coupled ? nullptr : &motion; }
 
   PetscErrorCode AddFields(DM dm) override;
   PetscErrorCode AddConditions(DM dm, Conditions &list) override;
   PetscErrorCode SetUp(DM dm) override;
 
-  PetscErrorCode Residual(const PetscScalar *x, PetscScalar *f) override { return GeometryResidual(&forms, x, f); }
-  PetscErrorCode Jacobian(const PetscScalar *x, Mat P) override { return GeometryJacobian(&forms, x, P); }
+  PetscErrorCode Residual(const PetscScalar *x, PetscScalar *f) override { return GeometryResidual(forms, x, f); }
+  PetscErrorCode Jacobian(const PetscScalar *x, Mat P) override { return GeometryJacobian(forms, x, P); }
   void           Couplings(Sparsity &s) const override { GeometryCouplings(forms, s); }
   /* the harmonic extension's operator lives on the reference mesh: its split's PC is built once */
   SplitSetUp     SetUpPolicy() const override { return SETUP_ONCE; }
@@ -57,13 +58,12 @@ public:
   PetscBool      Summary(Headline *h) const override { return *h = {"displacement", field, "displacement_norm"}, PETSC_TRUE; }
   PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) override;
 
-  GeometryOptions  opt;
-  PetscInt         field = -1; /* d_f */
-  GeometryForms    forms;
-  PrescribedMotion motion;     /* the interface displacement when it is prescribed */
-
 private:
   const Scene      &sc;
+  GeometryOptions   opt;
+  PetscInt          field = -1; /* d_f */
+  GeometryForms     forms;
+  PrescribedMotion  motion; /* the interface displacement when it is prescribed */
   PetscBool         coupled = PETSC_FALSE, movesFluid = PETSC_FALSE; /* movesFluid: a fluid block moves with it */
   const Block      *fluid   = nullptr;
   GeometryPredictor predictor; /* a fluid on a prescribed moving mesh: the step's mesh motion first */

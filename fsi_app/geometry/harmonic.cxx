@@ -6,10 +6,8 @@ namespace fsi {
 
 /* R(d)(v) = int grad d : grad v, component by component (the residual of a linear problem is
    its operator applied: Newton converges in one step). */
-PetscErrorCode GeometryResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
+PetscErrorCode GeometryResidual(const GeometryForms &gb, const PetscScalar *x, PetscScalar *f)
 {
-  const GeometryForms &gb = *(GeometryForms *)ctx;
-
   PetscFunctionBegin;
   for (PetscInt k = 0; k < gb.cells.Size(); k++) {
     const CellGeometry &g = gb.cells.geom[k];
@@ -29,10 +27,8 @@ PetscErrorCode GeometryResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode GeometryJacobian(void *ctx, const PetscScalar *, Mat P)
+PetscErrorCode GeometryJacobian(const GeometryForms &gb, const PetscScalar *, Mat P)
 {
-  const GeometryForms &gb = *(GeometryForms *)ctx;
-
   PetscFunctionBegin;
   for (PetscInt k = 0; k < gb.cells.Size(); k++) {
     const CellGeometry &g = gb.cells.geom[k];

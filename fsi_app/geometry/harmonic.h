@@ -6,7 +6,7 @@
 #pragma once
 
 #include "discretization/cells.h"
-#include "solver/sparsity.h"
+#include "core/sparsity.h"
 #include <petscsnes.h>
 
 namespace fsi {
@@ -17,8 +17,8 @@ struct GeometryForms {
 };
 
 /* Its rows (the context is the GeometryForms): the cells' dropped rows are left out. */
-PetscErrorCode GeometryResidual(void *ctx, const PetscScalar *x, PetscScalar *f);
-PetscErrorCode GeometryJacobian(void *ctx, const PetscScalar *x, Mat P);
+PetscErrorCode GeometryResidual(const GeometryForms &gb, const PetscScalar *x, PetscScalar *f);
+PetscErrorCode GeometryJacobian(const GeometryForms &gb, const PetscScalar *x, Mat P);
 /* the entries GeometryJacobian inserts */
 void GeometryCouplings(const GeometryForms &gb, Sparsity &s);
 

@@ -13,7 +13,7 @@ PetscErrorCode GeometryPredictorCreate(DM dm, PetscInt field, const GeometryForm
   p.dm = dm, p.gb = &gb;
   PetscCall(DMCreateSubDM(dm, 1, &field, &p.is, nullptr));
   PetscCall(DMCreateMatrix(dm, &full));
-  PetscCall(GeometryJacobian((void *)&gb, nullptr, full));
+  PetscCall(GeometryJacobian(gb, nullptr, full));
   PetscCall(AssembleOperators(full, full));
   PetscCall(MatCreateSubMatrix(full, p.is, p.is, MAT_INITIAL_MATRIX, &p.K));
   PetscCall(MatDestroy(&full));
@@ -45,7 +45,7 @@ PetscErrorCode GeometryPredict(GeometryPredictor &p, PetscReal t, Vec x)
   PetscCall(VecZeroEntries(Fl));
   PetscCall(VecGetArrayRead(Xl, &xa));
   PetscCall(VecGetArray(Fl, &fa));
-  PetscCall(GeometryResidual((void *)p.gb, xa, fa));
+  PetscCall(GeometryResidual(*p.gb, xa, fa));
   PetscCall(VecRestoreArray(Fl, &fa));
   PetscCall(VecRestoreArrayRead(Xl, &xa));
   PetscCall(VecZeroEntries(F));

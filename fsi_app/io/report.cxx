@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "report.h"
-#include "files.h"
+#include "base/files.h"
 #include <cerrno>
 #include <cstdio>
 #include <cstring>

@@ -6,12 +6,21 @@
 
 #include "discretization/probes.h"
 #include "io/phases.h"
-#include "solver/time_loop.h"
+#include <petscsnes.h>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace fsi {
+
+/* What one time step (or load increment) did. */
+struct StepRecord {
+  PetscInt            step = 0;
+  PetscReal           t    = 0;
+  PetscInt            newton = 0, krylov = 0, cuts = 0; /* summed over every attempt */
+  SNESConvergedReason reason = SNES_CONVERGED_ITERATING;
+  Phases              phases; /* of this step: seconds per phase, wall clock (total), peak memory so far */
+};
 
 struct RunReport {
   std::vector<std::pair<std::string, PetscInt>>              unknowns;

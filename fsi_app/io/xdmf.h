@@ -9,11 +9,18 @@
 #pragma once
 
 #include "discretization/cells.h"
-#include "solver/block.h"
 #include <string>
 #include <vector>
 
 namespace fsi {
+
+/* Fields written on the P2 cells of one region: one part of the XDMF output. */
+struct OutputPart {
+  std::string                                   name; /* "fluid", "wall" */
+  const FieldCells                             *mesh = nullptr;
+  std::vector<std::pair<std::string, PetscInt>> fields;
+};
+
 
 struct XdmfField {
   std::string name;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <sys/stat.h>
 #include <map>
 #include <set>
 #include <tuple>
@@ -39,6 +40,7 @@ struct GmshScan {
   bool                                      partial = false; /* the last line read ends without a newline */
   std::set<std::pair<long long, long long>> entities;        /* (dimension, tag) of $Entities */
   bool                                      hasEntities = false;
+  long long                                 bytes = 0; /* the file's size */
   long long                                 nodeMin = 1, tetrahedra = 0, curved = 0; /* first- and second-order tetrahedra */
   std::vector<bool>                         node; /* node[tag - nodeMin]: defined in $Nodes */
   std::vector<double>                       xyz;  /* its coordinates, 3 per tag */
@@ -153,6 +155,9 @@ std::string GmshScan::Nodes()
   if (!Integers(4, h) || h[0] < 0 || h[1] < 0) return At("the $Nodes header must be: numEntityBlocks numNodes minNodeTag maxNodeTag");
   if (h[1] && (h[2] < 1 || h[3] < h[2] || h[3] - h[2] >= (1LL << 31))) return At("node tags " + std::to_string(h[2]) + " to " + std::to_string(h[3]) + ": tags are positive and span less than 2^31");
   const long long blocks = h[0], total = h[1];
+  /* bound what the header makes this allocate: a node takes at least 8 bytes of the file */
+  if (total > bytes / 8 + 1) return At("the $Nodes header announces " + std::to_string(total) + " nodes, more than a file of " + std::to_string(bytes) + " bytes can hold");
+  if (total && h[3] - h[2] + 1 > 16 * total + 1000) return At("node tags " + std::to_string(h[2]) + " to " + std::to_string(h[3]) + " for " + std::to_string(total) + " nodes: the tags are too sparse to be read; renumber the nodes (gmsh -renumber)");
   nodeMin = h[2], node.assign(total ? h[3] - h[2] + 1 : 0, false), xyz.assign(3 * node.size(), 0.0);
   for (long long b = 0; b < blocks; b++) {
     if (!Next()) return Cut();
@@ -239,8 +244,11 @@ std::string GmshScan::Skip()
 
 std::string GmshFileProblem(const std::string &file, int *order, std::vector<double> *bent)
 {
+  struct stat st;
+  /* a FIFO would block the open, a device (/dev/zero) feed one endless line */
+  if (stat(file.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) return "mesh file '" + file + "' is not a regular file (a " + (S_ISDIR(st.st_mode) ? "directory" : S_ISFIFO(st.st_mode) ? "FIFO" : "device or socket") + "): give a gmsh .msh file (option -mesh)";
   GmshScan    s(file);
-  s.bent = bent;
+  s.bent = bent, s.bytes = st.st_size;
   std::string why;
   bool        nodes = false, elements = false;
 

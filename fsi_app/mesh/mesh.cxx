@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "mesh.h"
 #include "gmsh_file.h"
-#include "io/files.h"
+#include "base/files.h"
 #include <petscsf.h>
 #include <metis.h>
 #include <algorithm>

@@ -111,9 +111,8 @@ static PetscReal Inertia(const StructureForms &sb)
   return sb.history && !sb.history->past.empty() ? sb.rho / (sb.history->dt * sb.history->dt) : 0.0;
 }
 
-PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f)
+PetscErrorCode StructureResidual(StructureForms &sb, const PetscScalar *x, PetscScalar *f)
 {
-  const StructureForms      &sb      = *(StructureForms *)ctx;
   const PetscReal            inertia = Inertia(sb);
   std::vector<const PetscScalar *> past;
   PetscInt                   inverted = 0;
@@ -176,14 +175,13 @@ PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f
       Scatter(sb.cells, face.k, re, f);
     }
   PetscCall(TimeHistoryRestorePast(sb.history, past));
-  ((StructureForms *)ctx)->inverted = inverted;
+  sb.inverted = inverted;
   if (inverted) PetscCall(PetscInfo(sb.snes, "%" PetscInt_FMT " quadrature points with det F <= 0: the step is outside the domain of the law\n", inverted));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode StructureJacobian(void *ctx, const PetscScalar *x, Mat P)
+PetscErrorCode StructureJacobian(const StructureForms &sb, const PetscScalar *x, Mat P)
 {
-  const StructureForms &sb   = *(StructureForms *)ctx;
   const PetscReal       mass = Inertia(sb) * (sb.history ? sb.history->second[0] : 0.0);
 
   PetscFunctionBegin;

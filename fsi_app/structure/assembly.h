@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: BSD-2-Clause
 /* The structure block's residual and Jacobian, assembled cell by cell with the P2 element of
    discretization/p2tet.h: R(d) = int rho d_tt . v + int P(F) : grad v - int b . v
-   + int_faces p n . v, with d_tt the fully implicit difference of solver/time_history.h and
+   + int_faces p n . v, with d_tt the fully implicit difference of core/time_history.h and
    n the normal of the reference face (dead pressure) or of the deformed one (follower). */
 #pragma once
 
 #include "discretization/cells.h"
-#include "solver/sparsity.h"
-#include "solver/time_history.h"
+#include "core/sparsity.h"
+#include "core/time_history.h"
 #include "structure/materials.h"
 #include <petscsnes.h>
 
@@ -39,11 +39,12 @@ struct StructureForms {
   PetscInt           inverted = 0;               /* quadrature points with det F <= 0 in the last residual */
 };
 
-/* BlockOps of solver/system.h (the context is the StructureForms). */
+/* Its rows of the residual (added into the local f; the residual records inverted cells in
+   the forms) and of the Jacobian, for the local state x. */
 /* The mass matrices of the curved cells, once: the reference one times |det E| serves the rest. */
 void           StructureCurvedMasses(StructureForms &sb);
-PetscErrorCode StructureResidual(void *ctx, const PetscScalar *x, PetscScalar *f);
-PetscErrorCode StructureJacobian(void *ctx, const PetscScalar *x, Mat P);
+PetscErrorCode StructureResidual(StructureForms &sb, const PetscScalar *x, PetscScalar *f);
+PetscErrorCode StructureJacobian(const StructureForms &sb, const PetscScalar *x, Mat P);
 /* the entries StructureJacobian inserts */
 void StructureCouplings(const StructureForms &sb, Sparsity &s);
 

@@ -3,8 +3,9 @@
 #include "discretization/fields.h"
 #include "discretization/nodes.h"
 #include "mesh/mesh.h"
-#include "solver/options.h"
-#include "solver/subdomains.h"
+#include "base/options.h"
+#include "base/ramp.h"
+#include "structure/subdomains.h"
 #include "verification/errors.h"
 #include "verification/mms.h"
 
@@ -37,8 +38,8 @@ PetscErrorCode StructureBlock::ReadOptions(std::map<std::string, std::string> &p
   PetscCall(r.Real("-structure_pressure_ramp", "the pressure rises smoothly (sin^2) from 0 over this time (s); 0: a step at t = 0", &o.ramp, NonNegative, PROBLEM));
   PetscCall(r.Real("-structure_pressure_until", "the pressure acts while t <= this (s); 0: always", &o.pulseEnd, NonNegative, PROBLEM));
   PetscCall(r.Enum("-structure_material", "constitutive law of the wall", MaterialNames, &o.material, PROBLEM));
-  PetscCall(r.Real("-structure_E", "Young's modulus (linear elastic)", &o.E, Positive, PROBLEM));
-  PetscCall(r.Real("-structure_nu", "Poisson ratio (linear elastic)", &o.nu, Range{-1, 0.5, PETSC_TRUE, PETSC_TRUE}, PROBLEM));
+  PetscCall(r.Real("-structure_E", "Young's modulus (linear elastic; dyn/cm^2)", &o.E, Positive, PROBLEM));
+  PetscCall(r.Real("-structure_nu", "Poisson ratio (linear elastic; dimensionless)", &o.nu, Range{-1, 0.5, PETSC_TRUE, PETSC_TRUE}, PROBLEM));
   PetscCall(r.Real("-structure_nh_mu", "Neo-Hooke shear modulus (dyn/cm^2)", &o.mu, Positive, PROBLEM));
   PetscCall(r.Real("-structure_nh_kappa", "Neo-Hooke bulk modulus (dyn/cm^2)", &o.kappa, Positive, PROBLEM));
   n = 5;
@@ -48,14 +49,17 @@ PetscErrorCode StructureBlock::ReadOptions(std::map<std::string, std::string> &p
              "-structure_arterial %g,%g,%g,%g,%g: need c1 > 0, eps1 > 0, eps2 > 1, alpha1 >= 0, alpha2 >= 2 (polyconvexity and a C2 energy)", (double)o.arterial[0], (double)o.arterial[1], (double)o.arterial[2], (double)o.arterial[3], (double)o.arterial[4]);
   PetscCall(r.Real("-structure_arterial_fibre_angle", "angle of the two fibre families from the circumferential direction (degrees)", &o.fibreAngle, Range{0, 90}, PROBLEM));
   PetscCall(r.Real("-structure_density", "density of the wall (g/cm^3)", &o.rho, Positive, PROBLEM));
-  PetscCall(r.Int("-structure_degree", "polynomial degree of the displacement", &o.degree, Range{1, 3}, PROBLEM));
   PetscCall(r.Int("-structure_subdomains", "GDSW subdomains per rank (METIS on the rank's cells)", &o.subdomains, AtLeast(1), RUN));
-  PetscCall(r.CheckChoice("-structure_pc_setup", SplitSetUpNames, 3));
-  PetscCall(PetscOptionsEList("-structure_pc_setup", "when the structure split's preconditioner is rebuilt (default: once for a linear wall, every time step otherwise)", nullptr, SplitSetUpNames, 3, o.pcSetUp < 0 ? "auto" : SplitSetUpNames[o.pcSetUp], &o.pcSetUp, nullptr));
+  {
+    const char *const policies[] = {"every_newton", "every_step", "once", "auto", "SplitSetUp", "", nullptr}; /* SplitSetUp's order, then auto */
+    PetscInt          policy     = o.pcSetUp < 0 ? 3 : o.pcSetUp;
+    PetscCall(r.Choice("-structure_pc_setup", "when the structure split's preconditioner is rebuilt (auto: once for a linear wall, every time step otherwise)", policies, &policy, RUN));
+    o.pcSetUp = policy == 3 ? -1 : policy;
+  }
   PetscCall(r.Points("-structure_probes", "points x1,y1,z1,x2,... (at most 20, reference configuration) where the wall's displacement is recorded every step (in the run report)", o.probes));
-  PetscCall(r.Real("-mms_amplitude", "-mms: the amplitude a of the manufactured displacement d = a sin(pi x)sin(pi y)sin(pi z)(1,1,1) on the unit cube", &o.mmsAmplitude, Any, PROBLEM));
+  PetscCall(r.Real("-mms_amplitude", "-mms: the amplitude a of the manufactured displacement d = a sin(pi x)sin(pi y)sin(pi z)(1,1,1) on the unit cube (cm)", &o.mmsAmplitude, Any, PROBLEM));
   n = 2;
-  PetscCall(r.Reals("-lame", "verification against Lame's cylinder: inner,outer radius", o.lameRadii, &n, &set, Positive, RUN));
+  PetscCall(r.Reals("-lame", "verification against Lame's cylinder: inner,outer radius (cm)", o.lameRadii, &n, &set, Positive, RUN));
   PetscCheck(!set || n == 2, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-lame: give the inner and the outer radius, Ri,Ro (got %" PetscInt_FMT " values)", n);
   PetscCheck(!set || o.lameRadii[0] < o.lameRadii[1], PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-lame %s,%s: the inner radius must be smaller than the outer one (give Ri,Ro)", Number(o.lameRadii[0]).c_str(), Number(o.lameRadii[1]).c_str());
   PetscOptionsEnd();
@@ -73,8 +77,7 @@ void StructureBlock::Groups(std::vector<GroupUse> &groups) const
 PetscErrorCode StructureBlock::AddFields(DM dm)
 {
   PetscFunctionBegin;
-  PetscCheck(opt.degree == 2, PETSC_COMM_WORLD, PETSC_ERR_SUP, "-structure_degree %" PetscInt_FMT ": the element loops are P2 (use 2)", opt.degree);
-  PetscCall(AddLagrangeField(dm, "displacement", opt.region, 3, opt.degree, &field));
+  PetscCall(AddLagrangeField(dm, "displacement", opt.region, 3, 2, &field));
   PetscFunctionReturn(0);
 }
 

@@ -4,9 +4,9 @@
    modes, and its verification (Lame's cylinder, the manufactured solution). */
 #pragma once
 
-#include "scene.h"
+#include "core/scene.h"
 #include "discretization/probes.h"
-#include "solver/block.h"
+#include "core/block.h"
 #include "structure/assembly.h"
 #include "structure/materials.h"
 
@@ -30,7 +30,7 @@ struct StructureOptions {
   PetscReal arterial[5] = {1.75e5, 4.998e6, 2.4, 3.00019e8, 5.1}; /* c1, eps1, eps2, alpha1, alpha2 */
   PetscReal fibreAngle  = 43.39;                          /* degrees from circumferential */
   PetscReal rho         = 1.2;
-  PetscInt  degree = 2, subdomains = 1;
+  PetscInt  subdomains = 1;
   PetscInt  pcSetUp = -1; /* its split's preconditioner rebuilt every Newton step, time step, once (SplitSetUp); -1: once if linear, else every time step */
   std::vector<PetscReal> probes;  /* points (3 each) where the displacement is recorded */
   PetscReal mmsAmplitude = 1;     /* -mms: the manufactured displacement's amplitude */
@@ -43,15 +43,17 @@ public:
   const char    *Name() const override { return "structure"; }
   PetscErrorCode ReadOptions(std::map<std::string, std::string> &problem) override;
   void           Groups(std::vector<GroupUse> &groups) const override;
-  std::string    Region() const override { return opt.region; }
+  std::string       Group(const std::string &role) const override { return role == "region" ? opt.region : ""; }
+  PetscInt          Field(const std::string &name) const override { return name == "displacement" ? field : -1; }
+  const FieldCells *Cells(const std::string &name) const override { return name == "displacement" ? &forms.cells : nullptr; }
 
   PetscErrorCode AddFields(DM dm) override;
   PetscErrorCode AddConditions(DM dm, Conditions &list) override;
   PetscErrorCode SetUp(DM dm) override;
   void           Attach(SNES snes, const TimeHistory *history) override { forms.snes = snes, forms.history = history; }
 
-  PetscErrorCode Residual(const PetscScalar *x, PetscScalar *f) override { return StructureResidual(&forms, x, f); }
-  PetscErrorCode Jacobian(const PetscScalar *x, Mat P) override { return StructureJacobian(&forms, x, P); }
+  PetscErrorCode Residual(const PetscScalar *x, PetscScalar *f) override { return StructureResidual(forms, x, f); }
+  PetscErrorCode Jacobian(const PetscScalar *x, Mat P) override { return StructureJacobian(forms, x, P); }
   void           Couplings(Sparsity &s) const override { StructureCouplings(forms, s); }
   PetscErrorCode SetTime(PetscReal t) override;
 
@@ -69,13 +71,12 @@ public:
   PetscErrorCode AfterStep(DM dm, PetscInt step, PetscReal t, Vec x) override;
   PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) override;
 
+private:
+  const Scene     &sc;
   StructureOptions opt;
   PetscInt         field = -1; /* d_s */
   StructureForms   forms;
   Probes           probes;
-
-private:
-  const Scene &sc;
 
   /* The factor of every load (pressure, traction, body force) at time t (dynamics: the pulse
      and its ramp) or load fraction t (statics). */

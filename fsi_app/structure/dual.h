@@ -16,8 +16,6 @@ struct Dual {
   Dual(const T &c, int) : v(c) { }
 };
 
-template <class T> inline T DualValue(const T &x) { return x; }
-
 #define FSI_DUAL_BINARY(op, val, der)                                                    \
   template <int N, class T>                                                              \
   inline Dual<N, T> operator op(const Dual<N, T> &a, const Dual<N, T> &b)                \

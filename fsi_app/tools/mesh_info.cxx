@@ -4,7 +4,7 @@ static const char help[] = "Reads a gmsh mesh as fsi_app does and prints, per ph
                            "  -mesh <file>          the .msh file\n"
                            "  -require <a,b,...>    groups that must exist (the message names a missing one)\n";
 
-#include "../mesh/mesh.h"
+#include "mesh/mesh.h"
 
 int main(int argc, char **argv)
 {

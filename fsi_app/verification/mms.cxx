@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "mms.h"
-#include "scene.h"
+#include "base/ramp.h"
 
 namespace fsi {
 

@@ -35,7 +35,7 @@ void PoiseuilleTraction(const Poiseuille &f, const PetscReal x[3], const PetscRe
 void PoiseuilleVelocity(const PetscReal x[3], PetscReal t, const void *ctx, PetscReal u[3], PetscReal G[9]);
 
 /* The prescribed interface displacement d = a s(t) (x^2 - y^2, -2 x y, 0): harmonic, zero in z
-   on planes z = c, with s the smooth ramp of scene.h (s = 1 in statics). */
+   on planes z = c, with s the smooth ramp of base/ramp.h (s = 1 in statics). */
 struct PrescribedMotion {
   PetscReal a, ramp;
   PetscBool dynamic;
@@ -47,7 +47,7 @@ void           PrescribedDisplacementSolution(const PetscReal X[3], PetscReal t,
 /* A manufactured flow on a fixed or moving mesh. Trigonometric: u = s(t) U(x), p = s(t) P(x),
    U = (sin(pi y) sin(pi z), sin(pi z) sin(pi x), sin(pi x) sin(pi y)) (divergence-free: no
    component depends on its own coordinate), P = cos(pi x) cos(pi y) cos(pi z), s the smooth ramp
-   of scene.h over `ramp` (s = 1 in statics). Uniform: u = (1, 1/2, 1/4), p = 0 at all times
+   of base/ramp.h over `ramp` (s = 1 in statics). Uniform: u = (1, 1/2, 1/4), p = 0 at all times
    (geometric conservation: it must stay so on any moving mesh). The body force
    f = rho (d_t u + (u . grad) u) - mu Lap u + grad p, with d_t at fixed x, makes either a
    solution of the ALE equations whatever the mesh does. */

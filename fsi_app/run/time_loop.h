@@ -6,21 +6,13 @@
    checkpoints do not depend on the cuts. */
 #pragma once
 
-#include "io/phases.h"
-#include "solver/time_history.h"
+#include "io/report.h"
+#include "core/time_history.h"
 #include <functional>
 #include <petscsnes.h>
 #include <vector>
 
 namespace fsi {
-
-struct StepRecord {
-  PetscInt            step = 0;
-  PetscReal           t    = 0;
-  PetscInt            newton = 0, krylov = 0, cuts = 0; /* summed over every attempt */
-  SNESConvergedReason reason = SNES_CONVERGED_ITERATING;
-  Phases              phases; /* of this step: seconds per phase, wall clock (total), peak memory so far */
-};
 
 struct TimeLoop {
   SNES                                       snes;

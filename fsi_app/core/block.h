@@ -2,18 +2,21 @@
 /* A block of the monolithic system (structure, fluid, geometry, coupling): it owns everything
    about itself — its fields, essential conditions, cells, rows of the residual and Jacobian,
    its split of the preconditioner, its output and its verification. A scene is a list of
-   blocks (blocks.h); the application only sums them. The stages are called in this order:
-   Wire (every block exists), ReadOptions, Check, Groups (before the mesh is read), AddFields,
-   AddConditions (every field exists), SetUp (the section exists), then per step SetTime,
-   Predict, residuals and Jacobians, AfterStep; Results at the end. */
+   blocks (run/registry.h); the application only sums them. The stages are called in this
+   order: Wire (every block exists), ReadOptions, Check, Groups (before the mesh is read),
+   AddFields, AddConditions (every field exists), SetUp (the section exists), then per step
+   SetTime, Predict, residuals and Jacobians, AfterStep; Results at the end. Blocks talk to
+   each other only through this contract (Group, Field, Cells, Motion): no block reads another's
+   members, so a block can be replaced without editing its partners. */
 #pragma once
 
 #include "discretization/cells.h"
 #include "discretization/conditions.h"
 #include "io/report.h"
+#include "io/xdmf.h"
 #include "mesh/mesh.h"
-#include "solver/sparsity.h"
-#include "solver/time_history.h"
+#include "core/sparsity.h"
+#include "core/time_history.h"
 #include <petscsnes.h>
 #include <map>
 #include <string>
@@ -21,27 +24,23 @@
 
 namespace fsi {
 
+struct PrescribedMotion; /* verification/mms.h */
+
 /* When the preconditioner of a split is set up again: every Newton step, at the first Newton
    step of each time step, or once per run (rows that never change). */
 enum SplitSetUp { SETUP_EVERY_NEWTON, SETUP_EVERY_STEP, SETUP_ONCE };
 extern const char *const SplitSetUpNames[];
 
-/* Fields written on the P2 cells of one region: one part of the XDMF output. */
-struct OutputPart {
-  std::string                                   name; /* "fluid", "wall" */
-  const FieldCells                             *mesh = nullptr;
-  std::vector<std::pair<std::string, PetscInt>> fields;
-};
-
 /* The role of -structure_region and -fluid_region (GroupUse): the two must be different groups. */
 inline const char *const RegionsRole = "regions of the wall and the fluid";
 
-/* What a run's summary line reports: the largest value of a field, and the solution's norm
-   under the name `norm`. */
+/* What a run's summary line and report give of the solution: the largest value of a field
+   (max_<name>) and, under the name `norm`, the 2-norm of that field or of the whole solution. */
 struct Headline {
   std::string name;
   PetscInt    field;
   std::string norm;
+  PetscBool   whole = PETSC_FALSE;
 };
 
 class Block {
@@ -58,8 +57,17 @@ public:
   virtual PetscErrorCode Check() const { return 0; }
   /* The mesh groups its options name (checked when the mesh is read), and its region ("": none,
      or the whole mesh): the partition balances the cells of every region. */
-  virtual void        Groups(std::vector<GroupUse> &groups) const = 0;
-  virtual std::string Region() const { return ""; }
+  virtual void Groups(std::vector<GroupUse> &groups) const = 0;
+  std::string  Region() const { return Group("region"); }
+
+  /* What its partners may ask of it: the group it gives a role ("region", "interface",
+     "noslip", "inlet", "outlet"; "" if none), the number of its field `name` in the DM (-1 if
+     it has none; valid after AddFields), that field's cells (after SetUp), and the interface
+     motion it prescribes (a mesh moved by a given wall: the manufactured flows' data). */
+  virtual std::string             Group(const std::string &role) const { return ""; }
+  virtual PetscInt                Field(const std::string &name) const { return -1; }
+  virtual const FieldCells       *Cells(const std::string &name) const { return nullptr; }
+  virtual const PrescribedMotion *Motion() const { return nullptr; }
 
   virtual PetscErrorCode AddFields(DM dm) = 0;
   virtual PetscErrorCode AddConditions(DM dm, Conditions &list) { return 0; }
@@ -105,12 +113,11 @@ public:
   virtual PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) { return 0; }
 };
 
-/* The block named `name` among `scene`, of type B (nullptr: the scene has none). */
-template <class B>
-B *FindBlock(const std::vector<Block *> &scene, const char *name)
+/* The block named `name` among `scene` (nullptr: the scene has none). */
+inline Block *FindBlock(const std::vector<Block *> &scene, const char *name)
 {
   for (Block *b : scene)
-    if (std::string(b->Name()) == name) return dynamic_cast<B *>(b);
+    if (std::string(b->Name()) == name) return b;
   return nullptr;
 }
 

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "files.h"
+#include <climits>
+#include <cstdlib>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <cerrno>
@@ -104,6 +106,23 @@ PetscErrorCode FileDigest(MPI_Comm comm, const std::string &path, std::string *d
   PetscFunctionReturn(0);
 }
 
+/* "" if no live run holds `path`'s lock (a lock whose process has ended is removed), else who. */
+static std::string Holder(const std::string &path)
+{
+  const std::string lock = path + ".lock";
+  char              host[256] = "";
+  gethostname(host, sizeof(host) - 1);
+  std::ifstream in(lock);
+  if (!in) return "";
+  std::string theirHost;
+  long        pid = 0;
+  in >> theirHost >> pid;
+  if (theirHost != host) return "a run on host " + theirHost + " (process " + std::to_string(pid) + ") is writing it; if that run has ended, remove " + lock;
+  if (pid > 0 && (kill((pid_t)pid, 0) == 0 || errno == EPERM)) return "another run (process " + std::to_string(pid) + ") is writing it; give another name, or wait until that run ends (or remove " + lock + " if no run is)";
+  std::remove(lock.c_str()); /* its run ended without removing it */
+  return "";
+}
+
 /* "" if this process may write `path`, else who holds it. */
 static std::string Claim(const std::string &path)
 {
@@ -119,13 +138,8 @@ static std::string Claim(const std::string &path)
       return ok ? "" : "cannot write its lock file " + lock;
     }
     if (errno != EEXIST) return "cannot create its lock file " + lock + " (" + std::strerror(errno) + ")";
-    std::ifstream in(lock);
-    std::string   theirHost;
-    long          pid = 0;
-    in >> theirHost >> pid;
-    if (theirHost != host) return "a run on host " + theirHost + " (process " + std::to_string(pid) + ") is writing it; if that run has ended, remove " + lock;
-    if (pid > 0 && (kill((pid_t)pid, 0) == 0 || errno == EPERM)) return "another run (process " + std::to_string(pid) + ") is writing it; give another name, or wait until that run ends (or remove " + lock + " if no run is)";
-    std::remove(lock.c_str()); /* its run ended without removing it */
+    const std::string who = Holder(path);
+    if (!who.empty()) return who;
   }
   return "cannot take over its lock file " + lock;
 }
@@ -138,6 +152,26 @@ PetscErrorCode ClaimFile(MPI_Comm comm, const char *option, const std::string &p
     return why.empty() ? why : std::string(option) + " " + path + ": " + why;
   }));
   PetscFunctionReturn(0);
+}
+
+PetscErrorCode CheckNotClaimed(MPI_Comm comm, const char *option, const std::string &path)
+{
+  PetscFunctionBegin;
+  PetscCall(CheckOnRankZero(comm, PETSC_ERR_FILE_OPEN, [&]() {
+    const std::string who = Holder(path);
+    return who.empty() ? who : std::string(option) + " " + path + ": " + who + "; reading it now would take that run's later steps";
+  }));
+  PetscFunctionReturn(0);
+}
+
+std::string CanonicalPath(const std::string &path)
+{
+  char        full[PATH_MAX];
+  const size_t slash = path.rfind('/');
+  const std::string dir = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash), base = slash == std::string::npos ? path : path.substr(slash + 1);
+  if (realpath(path.c_str(), full)) return full; /* the file exists: its links resolved */
+  if (realpath(dir.c_str(), full)) return std::string(full) + "/" + base;
+  return path;
 }
 
 PetscErrorCode ReleaseFile(MPI_Comm comm, const std::string &path)

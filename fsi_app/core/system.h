@@ -5,7 +5,7 @@
    time of the step being solved, before any block reads the state. */
 #pragma once
 
-#include "solver/block.h"
+#include "core/block.h"
 #include <vector>
 
 namespace fsi {
@@ -19,7 +19,7 @@ struct System {
 };
 
 /* The Jacobian's matrix, without storage yet: the first Jacobian evaluation lays it out with
-   exactly the entries the blocks insert (solver/sparsity.h; DMCreateMatrix's pattern couples
+   exactly the entries the blocks insert (core/sparsity.h; DMCreateMatrix's pattern couples
    every field at a point with every other: the geometry's rows with the velocity, the
    multiplier's with all the fluid's and the wall's: 65 % zeros on the coupled tube). Later
    insertions outside the pattern are errors. Block size 3 when every node carries one

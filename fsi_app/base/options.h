@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: BSD-2-Clause
-/* Reading a block's or the scene's options: every number checked where it is read (finite, in
-   its range), every choice against its list, and the options that define the problem recorded
-   with their values, which a checkpoint keeps and a restart compares. */
+/* Reading a block's or the scene's options: every number checked where it is read (given a
+   value, finite, in its range, an integer that fits), every choice against its list, and the
+   options that define the problem recorded with their values, which a checkpoint keeps and a
+   restart compares. -help prints one line per option with its value, its default when the
+   scene changed it, and its range; every name read is known, so that an unused option that
+   looks like one of them is refused (CheckUnusedOptions). */
 #pragma once
 
 #include <petscsys.h>
@@ -44,19 +47,17 @@ struct OptionReader {
   PetscErrorCode Bool(const char *name, const char *text, PetscBool *v, OptionRole role) const;
   /* points x1,y1,z1,x2,... (at most 20) */
   PetscErrorCode Points(const char *name, const char *text, std::vector<PetscReal> &xyz) const;
-  /* A value that is not one of the n names of list stops the run with one message: PETSc's own
-     parsers raise it on every rank. */
-  PetscErrorCode CheckChoice(const char *name, const char *const *list, PetscInt n) const;
+  /* a choice of a PETSc enum list (names, then the type name, the prefix and a null); a value
+     not in the list stops the run with one message (PETSc's own parser raises it on every rank) */
+  PetscErrorCode Choice(const char *name, const char *text, const char *const *list, PetscInt *v, OptionRole role) const;
   template <class E>
   PetscErrorCode Enum(const char *name, const char *text, const char *const *list, E *v, OptionRole role) const
   {
-    PetscInt n = 0;
+    PetscInt c = (PetscInt)*v;
 
     PetscFunctionBegin;
-    while (list[n + 2]) n++; /* PETSc's enum lists end with the type name, the prefix and a null */
-    PetscCall(CheckChoice(name, list, n));
-    PetscCall(PetscOptionsEnum(name, text, nullptr, list, (PetscEnum)*v, (PetscEnum *)v, nullptr));
-    Record(name, role, list[*v]);
+    PetscCall(Choice(name, text, list, &c, role));
+    *v = (E)c;
     PetscFunctionReturn(0);
   }
   /* An option's old name: its value moves to the new name, and the run says the new name once. */
@@ -64,6 +65,22 @@ struct OptionReader {
 
   void Record(const char *name, OptionRole role, const std::string &value) const;
   void Record(const char *name, OptionRole role, const PetscReal *v, PetscInt n) const;
+
+private:
+  /* The option's value as given; *given if it is in the database. `what` says what a value
+     must be, for the error of an option given without one. */
+  PetscErrorCode Given(const char *name, const char *what, std::string &value, PetscBool *given) const;
+  /* -help: "  -name <value>: text (range; default d)" */
+  PetscErrorCode Help(const char *name, const std::string &value, const std::string &def, const char *text, const std::string &range) const;
 };
+
+/* Every option that a reader has read, for CheckUnusedOptions. */
+void KnownOption(const char *name);
+
+/* Options left unused in the database that start with one of `prefixes` ("structure_") or are
+   within a letter or two of a known option stop the run, naming the closest known option
+   ("-structure_presure: no such option; did you mean -structure_pressure?"): a misspelled
+   option would otherwise leave its default in force without a word. */
+PetscErrorCode CheckUnusedOptions(MPI_Comm comm, const std::vector<std::string> &prefixes);
 
 } // namespace fsi

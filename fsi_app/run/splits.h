@@ -12,7 +12,7 @@
    once per run). Options that split by number (-pc_fieldsplit_0_fields) keep PETSc's meaning. */
 #pragma once
 
-#include "solver/block.h"
+#include "core/block.h"
 #include <petscsnes.h>
 #include <string>
 #include <vector>

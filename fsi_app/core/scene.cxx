@@ -1,20 +1,9 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "scene.h"
 #include "discretization/fields.h"
-#include "io/files.h"
-#include "solver/options.h"
-#include <fstream>
+#include "base/options.h"
 
 namespace fsi {
-
-const char *const PhysicsNames[] = {"structure", "fluid", "geometry", "fsi", "Physics", "PHYSICS_", nullptr};
-
-PetscReal SmoothRamp(PetscReal t, PetscReal T, PetscReal *rate)
-{
-  const PetscBool rising = (PetscBool)(T > 0 && t < T);
-  if (rate) *rate = rising ? PETSC_PI / (2 * T) * PetscSinReal(PETSC_PI * t / T) : 0.0;
-  return rising ? PetscSqr(PetscSinReal(PETSC_PI * t / (2 * T))) : 1.0;
-}
 
 /* dt and t_final give a whole number of steps, at least one, that a PetscInt counts. */
 static PetscErrorCode CheckTimeSteps(const Scene &sc)
@@ -31,38 +20,16 @@ static PetscErrorCode CheckTimeSteps(const Scene &sc)
   PetscFunctionReturn(0);
 }
 
-/* A restart's output series continues the one it finds. */
-PetscErrorCode CheckSceneFiles(const Scene &sc)
-{
-  PetscFunctionBegin;
-  if (sc.output[0]) {
-    const std::string xdmf = sc.output, base = xdmf.substr(0, xdmf.size() - 5), h5 = base + ".h5";
-    PetscCheck(xdmf.size() > 5 && xdmf.substr(xdmf.size() - 5) == ".xdmf", PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-output %s: name the file <name>.xdmf (the data go to <name>.h5)", sc.output);
-    PetscCall(CheckWritable(PETSC_COMM_WORLD, "-output", xdmf));
-    PetscCall(CheckWritable(PETSC_COMM_WORLD, "-output", h5));
-    PetscCall(ClaimFile(PETSC_COMM_WORLD, "-output", xdmf)); /* a second run on the same series would destroy it */
-    if (sc.restart[0])
-      PetscCall(CheckOnRankZero(PETSC_COMM_WORLD, PETSC_ERR_FILE_OPEN, [&]() {
-        return std::ifstream(h5) ? std::string() : "-output " + xdmf + " with -restart: the series continues in " + h5 + ", which is not there; give the -output of the run that wrote the checkpoint";
-      }));
-  }
-  if (sc.checkpoint[0]) PetscCall(CheckWritable(PETSC_COMM_WORLD, "-checkpoint", sc.checkpoint));
-  if (sc.report[0]) PetscCall(CheckWritable(PETSC_COMM_WORLD, "-report", sc.report, false)); /* /dev/stdout will do */
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode ReadScene(Scene &sc)
 {
-  char blocks[256] = "";
+  char blocks[256] = "structure";
 
   PetscFunctionBegin;
   PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "fsi_app: the scene (each block's options follow under its own title)", nullptr);
   const OptionReader opt{PetscOptionsObject, sc.problem};
-  PetscCall(opt.Enum("-physics", "what to solve: the wall, the fluid (with the geometry if -fluid_moving_mesh), the harmonic extension alone, or the coupled problem (fsi: structure, fluid, geometry, coupling)", PhysicsNames, &sc.physics, PROBLEM));
-  PetscCall(opt.String("-blocks", "the blocks of the scene, comma separated, from structure, fluid, geometry, coupling (empty: those of -physics)", blocks, sizeof(blocks), PROBLEM));
-  PetscCall(opt.Bool("-fluid_moving_mesh", "-physics fluid: the mesh moves (ALE) with the harmonic extension of the prescribed interface displacement", &sc.movingMesh, PROBLEM));
+  PetscCall(opt.String("-blocks", "the blocks of the scene, comma separated, from structure, fluid, geometry, coupling: structure,fluid,geometry,coupling is the coupled problem; fluid,geometry a fluid on a mesh moved by a prescribed interface displacement (ALE)", blocks, sizeof(blocks), PROBLEM));
   PetscCall(opt.String("-mesh", "gmsh mesh file", sc.mesh, sizeof(sc.mesh), PROBLEM));
-  PetscCall(opt.Int("-refine", "uniform refinements of the mesh after distribution", &sc.refine, NonNegative, PROBLEM));
+  PetscCall(opt.Int("-refine", "uniform refinements of the mesh after distribution (each multiplies the cells by 8)", &sc.refine, NonNegative, PROBLEM));
   PetscCall(opt.Int("-mesh_order", "the cells' geometry: 2 curved (isoparametric P2) by the file's second-order nodes, 1 straight (the vertices only), 0 as the file is", &sc.meshOrder, Range{0, 2}, PROBLEM));
   PetscCall(opt.Real("-dt", "time step (s); 0 solves the static problem", &sc.dt, NonNegative, RUN)); /* the checkpoint's header compares it */
   PetscCall(opt.Real("-t_final", "end time (s), a whole number of steps", &sc.tFinal, NonNegative, RUN));
@@ -74,15 +41,12 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(opt.Int("-output_every", "write every n-th step", &sc.outputEvery, AtLeast(1), RUN));
   PetscCall(opt.String("-checkpoint", "checkpoint file (PETSc binary); empty: none", sc.checkpoint, sizeof(sc.checkpoint), RUN));
   PetscCall(opt.Int("-checkpoint_every", "write the checkpoint every n-th step", &sc.checkpointEvery, AtLeast(1), RUN));
+  PetscCall(opt.Int("-checkpoint_keep", "keep the newest n checkpoints as <checkpoint>.<step> too (hard links; the file of -checkpoint is always the newest)", &sc.checkpointKeep, AtLeast(1), RUN));
   PetscCall(opt.String("-restart", "continue from this checkpoint (same mesh, options and number of ranks)", sc.restart, sizeof(sc.restart), RUN));
   PetscCall(opt.String("-report", "run report (JSON): unknowns, iterations per step, errors, time per phase, memory; empty: none", sc.report, sizeof(sc.report), RUN));
   PetscOptionsEnd();
   PetscCall(CheckTimeSteps(sc));
-  PetscCheck(!sc.movingMesh || sc.physics == PHYSICS_FLUID, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_moving_mesh: only with -physics fluid (-physics %s)", PhysicsNames[sc.physics]);
-  if (blocks[0]) sc.blocks = SplitList(blocks);
-  else if (sc.physics == PHYSICS_FSI) sc.blocks = {"structure", "fluid", "geometry", "coupling"};
-  else if (sc.physics == PHYSICS_FLUID && sc.movingMesh) sc.blocks = {"fluid", "geometry"};
-  else sc.blocks = {PhysicsNames[sc.physics]};
+  sc.blocks = SplitList(blocks);
   PetscFunctionReturn(0);
 }
 

@@ -1,22 +1,18 @@
 // SPDX-License-Identifier: BSD-2-Clause
 /* A scene: which blocks it solves, on which mesh, over which time, and the files it writes.
-   Each block reads its own options (solver/block.h); these are the scene's. */
+   Each block reads its own options (core/block.h); these are the scene's, which every block
+   may read. */
 #pragma once
 
-#include "solver/time_history.h"
+#include "core/time_history.h"
 #include <map>
 #include <string>
 #include <vector>
 
 namespace fsi {
 
-enum Physics { PHYSICS_STRUCTURE = 0, PHYSICS_FLUID = 1, PHYSICS_GEOMETRY = 2, PHYSICS_FSI = 3 };
-extern const char *const PhysicsNames[];
-
 struct Scene {
-  Physics                  physics = PHYSICS_STRUCTURE; /* shorthand for a list of blocks */
-  std::vector<std::string> blocks;                      /* the blocks a scene solves (blocks.h) */
-  PetscBool                movingMesh = PETSC_FALSE;    /* -physics fluid: the mesh moves (ALE) with the geometry block */
+  std::vector<std::string> blocks; /* the blocks a scene solves (run/registry.h) */
   /* mesh */
   char     mesh[PETSC_MAX_PATH_LEN] = "meshes/cube_L0.msh";
   PetscInt refine                   = 0;
@@ -29,7 +25,7 @@ struct Scene {
   PetscBool mms = PETSC_FALSE;
   /* files */
   char     output[PETSC_MAX_PATH_LEN] = "", checkpoint[PETSC_MAX_PATH_LEN] = "", restart[PETSC_MAX_PATH_LEN] = "", report[PETSC_MAX_PATH_LEN] = "";
-  PetscInt outputEvery = 1, checkpointEvery = 10;
+  PetscInt outputEvery = 1, checkpointEvery = 10, checkpointKeep = 3;
   /* the options that define the problem, the blocks' too, with their values: a restart must have the same */
   std::map<std::string, std::string> problem;
 
@@ -37,12 +33,7 @@ struct Scene {
   PetscInt  Steps() const { return Dynamic() ? (PetscInt)PetscFloorReal(tFinal / dt + 0.5) : loadSteps; } /* ReadScene checked: a whole number */
 };
 
-/* The scene's options; then the blocks read theirs (CreateBlocks), then CheckSceneFiles. */
+/* The scene's options; then the blocks read theirs (run/registry.h). */
 PetscErrorCode ReadScene(Scene &sc);
-/* The files the run will write can be written, before it computes anything. */
-PetscErrorCode CheckSceneFiles(const Scene &sc);
-
-/* sin^2(pi t / 2T) for t < T, then 1 (T = 0: 1 at once); its rate d/dt if asked. */
-PetscReal SmoothRamp(PetscReal t, PetscReal T, PetscReal *rate = nullptr);
 
 } // namespace fsi

@@ -28,6 +28,12 @@ PetscErrorCode CheckWritable(MPI_Comm comm, const char *option, const std::strin
    has ended is taken over. ReleaseFile removes it. */
 PetscErrorCode ClaimFile(MPI_Comm comm, const char *option, const std::string &path);
 PetscErrorCode ReleaseFile(MPI_Comm comm, const std::string &path);
+/* Refuse to read `path` (the value of `option`) while another live run holds its lock: it is
+   writing the file. */
+PetscErrorCode CheckNotClaimed(MPI_Comm comm, const char *option, const std::string &path);
+/* The absolute path of `path` with its links resolved (of its folder, if the file is not there
+   yet): two names of one file give one path. */
+std::string CanonicalPath(const std::string &path);
 
 /* Close a file opened on rank 0 for writing, and stop with a sentence naming `option` and the
    system's reason if anything written to it was lost (a full disk: /dev/full). */

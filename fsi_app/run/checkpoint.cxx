@@ -1,18 +1,22 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "checkpoint.h"
-#include "files.h"
+#include "base/files.h"
 #include "discretization/conditions.h"
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <unistd.h>
 #include <sstream>
 #include <vector>
 
 namespace fsi {
 
-static const PetscInt Magic = 0x46534933; /* "FSI3": with the problem's options and the states' checksums */
+static const PetscInt Magic = 0x46534934; /* "FSI4": with the problem's options, the header's and the states' checksums */
 
 /* header: magic, step, ranks, global size, scheme, past states, length of the problem's text;
-   then t, dt; the checksums of the states (two reals each, in the order of the states);
-   the text ("-option value" lines); the solution and the past states */
+   then t, dt; the checksums of the header (the integers, t, dt and the text) and of the
+   states (two reals each, in the order of the states); the text ("-option value" lines); the
+   solution and the past states */
 enum { HEAD_MAGIC, HEAD_STEP, HEAD_RANKS, HEAD_SIZE, HEAD_SCHEME, HEAD_PAST, HEAD_TEXT, HEAD_LEN };
 
 static std::string ProblemText(const std::map<std::string, std::string> &problem)
@@ -27,7 +31,7 @@ static std::string ProblemText(const std::map<std::string, std::string> &problem
 static long long CheckpointBytes(const PetscInt head[HEAD_LEN])
 {
   const long long vec = 2 * sizeof(PetscInt) + (long long)head[HEAD_SIZE] * sizeof(PetscScalar);
-  return HEAD_LEN * sizeof(PetscInt) + (2 + 2 * (1 + head[HEAD_PAST])) * sizeof(PetscReal) + head[HEAD_TEXT] + (1 + head[HEAD_PAST]) * vec;
+  return HEAD_LEN * sizeof(PetscInt) + (2 + 2 * (2 + head[HEAD_PAST])) * sizeof(PetscReal) + head[HEAD_TEXT] + (1 + head[HEAD_PAST]) * vec;
 }
 
 /* What a checkpoint keeps of a state to tell a damaged file: a 64-bit FNV-1a hash of its
@@ -54,6 +58,16 @@ static PetscErrorCode Checksum(Vec v, PetscReal sum[2])
   PetscFunctionReturn(0);
 }
 
+/* The header's checksum (as Checksum's two halves): a stored time or option changed by hand is
+   a damaged file, not a different problem. */
+static void HeaderChecksum(const PetscInt head[HEAD_LEN], const PetscReal times[2], const std::string &text, PetscReal sum[2])
+{
+  unsigned long long h = Fnv1a(head, HEAD_LEN * sizeof(PetscInt), FnvStart);
+  h                    = Fnv1a(times, 2 * sizeof(PetscReal), h);
+  h                    = Fnv1a(text.data(), text.size(), h);
+  sum[0] = (PetscReal)(h >> 32), sum[1] = (PetscReal)(h & 0xffffffffull);
+}
+
 /* The first option whose value differs from the checkpoint's, as a sentence; "" if none. */
 static std::string ProblemDifference(const char *file, const std::string &written, const std::map<std::string, std::string> &problem)
 {
@@ -74,8 +88,9 @@ static std::string ProblemDifference(const char *file, const std::string &writte
   return "";
 }
 
-PetscErrorCode CheckpointWrite(const char *file, DM dm, const CheckpointHeader &c, const std::map<std::string, std::string> &problem, Vec x, const TimeHistory &h)
+PetscErrorCode CheckpointWrite(CheckpointSeries &s, DM dm, const CheckpointHeader &c, const std::map<std::string, std::string> &problem, Vec x, const TimeHistory &h)
 {
+  const char *file = s.file.c_str();
   PetscViewer viewer;
   PetscMPIInt size, rank;
   PetscInt    N;
@@ -95,12 +110,13 @@ PetscErrorCode CheckpointWrite(const char *file, DM dm, const CheckpointHeader &
   const PetscInt    head[HEAD_LEN] = {Magic, c.step, size, N, h.scheme, (PetscInt)h.past.size(), (PetscInt)text.size()};
   const PetscReal   times[2]       = {c.t, h.dt};
   std::vector<Vec>  states(1 + h.past.size(), x);
-  std::vector<PetscReal> sums(2 * states.size());
+  std::vector<PetscReal> sums(2 + 2 * states.size());
   for (size_t j = 0; j < h.past.size(); j++) {
     PetscCall(DMGetGlobalVector(dm, &states[1 + j]));
     PetscCall(DMLocalToGlobal(dm, h.past[j], INSERT_VALUES, states[1 + j]));
   }
-  for (size_t j = 0; j < states.size(); j++) PetscCall(Checksum(states[j], &sums[2 * j]));
+  HeaderChecksum(head, times, text, &sums[0]);
+  for (size_t j = 0; j < states.size(); j++) PetscCall(Checksum(states[j], &sums[2 + 2 * j]));
   PetscCall(PetscViewerBinaryWrite(viewer, head, HEAD_LEN, PETSC_INT));
   PetscCall(PetscViewerBinaryWrite(viewer, times, 2, PETSC_REAL));
   PetscCall(PetscViewerBinaryWrite(viewer, sums.data(), (PetscInt)sums.size(), PETSC_REAL));
@@ -109,6 +125,16 @@ PetscErrorCode CheckpointWrite(const char *file, DM dm, const CheckpointHeader &
   for (size_t j = 1; j < states.size(); j++) PetscCall(DMRestoreGlobalVector(dm, &states[j]));
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCheck(rank || std::rename(tmp, file) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename checkpoint %s to %s", tmp, file);
+  if (s.keep > 1) { /* file.<step> beside it, the older ones of this run removed */
+    const std::string numbered = s.file + "." + std::to_string(c.step);
+    if (!rank) {
+      std::remove(numbered.c_str());
+      PetscCheck(link(file, numbered.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-checkpoint_keep %" PetscInt_FMT ": cannot keep %s as %s (%s); give -checkpoint_keep 1 on a file system without hard links", s.keep, file, numbered.c_str(), std::strerror(errno));
+    }
+    s.numbered.push_back(numbered);
+    for (; (PetscInt)s.numbered.size() > s.keep; s.numbered.pop_front())
+      if (!rank) std::remove(s.numbered.front().c_str());
+  }
   PetscCallMPI(MPI_Barrier(PetscObjectComm((PetscObject)dm)));
   PetscFunctionReturn(0);
 }
@@ -141,10 +167,12 @@ PetscErrorCode CheckpointRead(const char *file, DM dm, const std::map<std::strin
   PetscCheck(head[HEAD_MAGIC] == Magic, comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: not an fsi_app checkpoint (or one of an older version)", file);
   PetscCheck(bytes == CheckpointBytes(head), comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: %lld bytes where its header announces %lld: the file is truncated or damaged, not a whole checkpoint", file, bytes, CheckpointBytes(head));
   PetscCall(PetscViewerBinaryRead(viewer, times, 2, nullptr, PETSC_REAL));
-  std::vector<PetscReal> sums(2 * (1 + head[HEAD_PAST])), now(2);
+  std::vector<PetscReal> sums(2 * (2 + head[HEAD_PAST])), now(2);
   PetscCall(PetscViewerBinaryRead(viewer, sums.data(), (PetscInt)sums.size(), nullptr, PETSC_REAL));
   text.resize(head[HEAD_TEXT]);
   PetscCall(PetscViewerBinaryRead(viewer, &text[0], head[HEAD_TEXT], nullptr, PETSC_CHAR));
+  HeaderChecksum(head, times, text, now.data());
+  PetscCheck(now[0] == sums[0] && now[1] == sums[1], comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: its header (step, time, step size or options) does not match its checksum: the file was changed after it was written", file);
   const std::string differs = ProblemDifference(file, text, problem);
   PetscCheck(differs.empty(), comm, PETSC_ERR_ARG_INCOMP, "%s", differs.c_str());
   PetscCheck(head[HEAD_RANKS] == size, comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written by %" PetscInt_FMT " ranks; restart on as many (mpiexec -n %" PetscInt_FMT "): the unknowns are numbered per partition", file, head[HEAD_RANKS], head[HEAD_RANKS]);
@@ -156,7 +184,7 @@ PetscErrorCode CheckpointRead(const char *file, DM dm, const std::map<std::strin
   auto intact = [&](Vec v, size_t j) -> PetscErrorCode {
     PetscFunctionBegin;
     PetscCall(Checksum(v, now.data()));
-    PetscCheck(now[0] == sums[2 * j] && now[1] == sums[2 * j + 1], comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: %s stored in it does not match its checksum: the file was damaged after it was written", file,
+    PetscCheck(now[0] == sums[2 + 2 * j] && now[1] == sums[3 + 2 * j], comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: %s stored in it does not match its checksum: the file was damaged after it was written", file,
                j ? "a past state" : "the solution");
     PetscFunctionReturn(0);
   };

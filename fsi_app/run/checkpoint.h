@@ -5,7 +5,8 @@
    the previous checkpoint intact. */
 #pragma once
 
-#include "solver/time_history.h"
+#include "core/time_history.h"
+#include <deque>
 #include <map>
 #include <string>
 
@@ -20,12 +21,20 @@ struct CheckpointHeader {
    tells a mesh file changed under the same name. */
 inline const char *const MeshDigestKey = "mesh-file-digest";
 
+/* A run's checkpoints: `file` always holds the newest; the newest `keep` are also kept as
+   file.<step> (hard links of it, no copy), the older ones of this run removed. */
+struct CheckpointSeries {
+  std::string             file;
+  PetscInt                keep = 1;
+  std::deque<std::string> numbered; /* written by this run, oldest first */
+};
+
 /* `problem`: the options that define the problem and their values (Scene::problem). */
-PetscErrorCode CheckpointWrite(const char *file, DM dm, const CheckpointHeader &c, const std::map<std::string, std::string> &problem, Vec x, const TimeHistory &h);
+PetscErrorCode CheckpointWrite(CheckpointSeries &s, DM dm, const CheckpointHeader &c, const std::map<std::string, std::string> &problem, Vec x, const TimeHistory &h);
 
 /* Errors name the file and what does not match this run: a file that is not a whole
-   checkpoint (truncated: its size is not the one its header announces), a state that does not
-   match its checksum (damaged), the ranks, the unknowns, the time scheme, the step, the mesh
+   checkpoint (truncated: its size is not the one its header announces), a header or a state
+   that does not match its checksum (damaged), the ranks, the unknowns, the time scheme, the step, the mesh
    file's contents, and the first option of `problem` whose value differs. */
 PetscErrorCode CheckpointRead(const char *file, DM dm, const std::map<std::string, std::string> &problem, CheckpointHeader &c, Vec x, TimeHistory &h);
 

@@ -96,8 +96,7 @@ PetscErrorCode RunTimeLoop(const TimeLoop &loop, PetscInt first, Vec x, std::vec
     PetscCall(PhasesMeasure(PETSC_COMM_WORLD, t1 - t0, loop.splits, after));
     rec.phases = PhasesSince(before, after);
     records.push_back(rec);
-    if (loop.steps > 1 || rec.cuts)
-      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s %" PetscInt_FMT "/%" PetscInt_FMT " t %.4e newton %" PetscInt_FMT " krylov %" PetscInt_FMT " %s%s (%.1f s, peak memory %.0f MiB)\n", loop.dynamic ? "step" : "load step", step, loop.steps, (double)rec.t, rec.newton, rec.krylov,
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s %" PetscInt_FMT "/%" PetscInt_FMT " t %.4e newton %" PetscInt_FMT " krylov %" PetscInt_FMT " %s%s (%.1f s, peak memory %.0f MiB)\n", loop.dynamic ? "step" : "load step", step, loop.steps, (double)rec.t, rec.newton, rec.krylov,
                             SNESConvergedReasons[rec.reason], rec.cuts ? " after halving the step" : "", rec.phases.total, rec.phases.peakMiB));
     if (!ok) break;
     PetscCall(loop.afterStep(step, rec.t, x));

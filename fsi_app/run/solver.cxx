@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: BSD-2-Clause
+#include "solver.h"
+
+namespace fsi {
+
+/* Newton + the KSP/PC of the options database. A dynamic scene of linear blocks factors its
+   operator once; rows with an energy take the critical-point line search (it does not reject
+   good full Newton steps of stiff volumetric laws: arterial wall 7 -> 3 steps), the others
+   PETSc's default backtracking on the residual norm. A single block configures the whole PC
+   (gdsw: the wall's subdomains); several split it by name. */
+PetscErrorCode CreateSolver(const Scene &sc, DM dm, const Blocks &b, SNES *snes)
+{
+  Mat       J;
+  KSP       ksp;
+  PC        pc;
+  PetscBool linear = PETSC_TRUE, energy = PETSC_TRUE;
+
+  PetscFunctionBegin;
+  for (const Block *blk : b.list) linear = (PetscBool)(linear && blk->Linear()), energy = (PetscBool)(energy && blk->HasEnergy());
+  PetscCall(SNESCreate(PETSC_COMM_WORLD, snes));
+  PetscCall(SNESSetDM(*snes, dm));
+  PetscCall(SystemCreateMatrix(dm, &J));
+  PetscCall(SNESSetJacobian(*snes, J, J, nullptr, nullptr));
+  if (linear && sc.Dynamic()) {
+    PetscCall(SNESSetLagJacobian(*snes, -2));
+    PetscCall(SNESSetLagJacobianPersists(*snes, PETSC_TRUE));
+    PetscCall(SNESSetLagPreconditioner(*snes, -2));
+    PetscCall(SNESSetLagPreconditionerPersists(*snes, PETSC_TRUE));
+  }
+  if (energy) {
+    SNESLineSearch ls;
+    PetscCall(SNESGetLineSearch(*snes, &ls));
+    PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHCP));
+  }
+  PetscCall(SNESGetKSP(*snes, &ksp));
+  /* a Krylov solve that needs more iterations has failed (an indefinite tangent far from the
+     solution): the step is halved instead of iterating for minutes (PETSc's default is 10000) */
+  PetscCall(KSPSetTolerances(ksp, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 500));
+  PetscCall(SNESSetFromOptions(*snes));
+  PetscCall(KSPGetPC(ksp, &pc));
+  if (b.list.size() == 1) {
+    MatNullSpace nsp;
+    PetscCall(b.list[0]->ConfigurePC(dm, pc, &nsp));
+    if (nsp) PetscCall(MatSetNearNullSpace(J, nsp));
+    PetscCall(MatNullSpaceDestroy(&nsp));
+  } else PetscCall(SetNamedSplits(*snes, dm, b.Splits()));
+  PetscCall(MatDestroy(&J));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CheckFinished(const Scene &sc, const Blocks &b, SNES snes, const RunReport &report)
+{
+  SNESConvergedReason reason = report.steps.empty() ? SNES_CONVERGED_ITERATING : report.steps.back().reason;
+  const PetscInt      step   = report.steps.empty() ? 0 : report.steps.back().step;
+  char                cure[160]; /* what to change: the load increments (statics) or the time step */
+  std::string         cause;
+
+  PetscFunctionBegin;
+  if (sc.Dynamic()) PetscCall(PetscSNPrintf(cure, sizeof(cure), "reduce the time step (-dt %g now) or allow more halvings (-max_step_cuts %" PetscInt_FMT " now)", (double)sc.dt, sc.maxCuts));
+  else PetscCall(PetscSNPrintf(cure, sizeof(cure), "apply the load in more increments (-structure_load_steps %" PetscInt_FMT " now) or allow more halvings (-max_step_cuts %" PetscInt_FMT " now)", sc.loadSteps, sc.maxCuts));
+  if (reason == SNES_DIVERGED_FUNCTION_DOMAIN || reason == SNES_DIVERGED_LINE_SEARCH) { /* the line search may end on a point with no value */
+    PetscMPIInt rank, first = 0, any;
+    PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+    for (const Block *blk : b.list)
+      if (cause.empty()) cause = blk->InvertedCause();
+    PetscMPIInt mine = cause.empty() ? PETSC_MPI_INT_MAX : rank;
+    PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD)); /* the cause as the first rank that saw it says */
+    if (reason == SNES_DIVERGED_FUNCTION_DOMAIN || any != PETSC_MPI_INT_MAX) {
+      first   = any == PETSC_MPI_INT_MAX ? 0 : any;
+      int len = (int)cause.size();
+      PetscCallMPI(MPI_Bcast(&len, 1, MPI_INT, first, PETSC_COMM_WORLD));
+      cause.resize(len);
+      PetscCallMPI(MPI_Bcast(&cause[0], len, MPI_CHAR, first, PETSC_COMM_WORLD));
+      SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton stopped in step %" PetscInt_FMT ": %s in every step the line search tried, also on the step halved %" PetscInt_FMT " times; %s", step, cause.empty() ? "the residual had no value" : cause.c_str(), sc.maxCuts, cure);
+    }
+  }
+  if (reason == SNES_DIVERGED_LINEAR_SOLVE) {
+    KSP                ksp;
+    KSPConvergedReason kreason;
+    PetscCall(SNESGetKSP(snes, &ksp));
+    PetscCall(KSPGetConvergedReason(ksp, &kreason));
+    SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "the linear solver failed in step %" PetscInt_FMT " (%s, also on the step halved %" PetscInt_FMT " times); see -ksp_monitor_true_residual; CG needs a symmetric preconditioner (PCASM: -pc_asm_type basic); -pc_type lu -pc_factor_mat_solver_type mumps tells whether the preconditioner is the cause", step, KSPConvergedReasons[kreason], sc.maxCuts);
+  }
+  PetscCheck(reason >= 0, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton did not converge in step %" PetscInt_FMT " (%s, also on the step halved %" PetscInt_FMT " times); see -snes_monitor, or %s", step, SNESConvergedReasons[reason], sc.maxCuts, cure);
+  PetscFunctionReturn(0);
+}
+
+} // namespace fsi
