@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 static const char help[] = "Feeds PCGDSW one kind of bad input (-case <name>) so that tests can check its error message.\n"
                            "Cases: nonsquare, unassembled, coordinates, nullspace_length, singular, zero_row_2d, floating, partial_node, uncovered, index_negative, index_large,\n"
-                           "coordinates_nan, coordinates_2d, nullspace_nan, nullspace_zero, empty_subdomain.\n";
+                           "coordinates_nan, coordinates_2d, nullspace_nan, nullspace_zero, matrix_nan, matrix_inf, empty_subdomain.\n";
 
 /* A block-diagonal operator kron(L, I_bs), L the 1D Laplacian with n nodes (Dirichlet rows at
    both ends unless -case floating), is enough to reach each check. */
@@ -140,6 +140,15 @@ int main(int argc, char **argv)
     PetscCall(MatSetNearNullSpace(A, nsp));
     PetscCall(MatNullSpaceDestroy(&nsp));
     PetscCall(VecDestroy(&v));
+    PetscCall(PCSetOperators(pc, A, A));
+    PetscCall(PCSetUp(pc));
+  } else if (c == "matrix_nan" || c == "matrix_inf") { /* the diagonal of row 25 (rank 1 of 2) not finite */
+    PetscInt    row = 25;
+    PetscScalar v   = c == "matrix_nan" ? std::numeric_limits<PetscReal>::quiet_NaN() : std::numeric_limits<PetscReal>::infinity();
+    PetscCall(Laplacian(n, 1, PETSC_TRUE, &A));
+    PetscCall(MatSetValue(A, row, row, v, INSERT_VALUES));
+    PetscCall(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
     PetscCall(PCSetOperators(pc, A, A));
     PetscCall(PCSetUp(pc));
   } else if (c == "singular") { /* one dof with an all-zero row and column */

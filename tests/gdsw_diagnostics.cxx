@@ -7,7 +7,7 @@
 
 static const std::string diagnostics_help = std::string(help) +
                                             "Diagnostics, after the solve:\n"
-                                            "  -prefix <>          the solver's options prefix (as the inner solver of PCFIELDSPLIT has one)\n"
+                                            "  -prefix <>          the solver's options prefix (as the inner solver of PCFIELDSPLIT has one), read after the unprefixed ones\n"
                                             "  -check_phi          how well the coarse basis reproduces the rigid-body modes\n"
                                             "  -check_coarse       the coarse operator against Phi^T (A Phi), the coarse solver (AIJ only; after each set-up)\n"
                                             "  -report_subdomains  the dofs of all nonoverlapping and of all overlapping subdomains, how many of the former are connected\n"

@@ -42,11 +42,19 @@ def element_stiffness(h, nu):
     return K
 
 
+def fail(message):
+    """Stop every rank with exit status 1; rank 0 alone prints why (each rank reaches the same
+    verdict, and a message per rank would repeat it)."""
+    if PETSc.COMM_WORLD.getRank() == 0:
+        print(message, file=sys.stderr, flush=True)
+    sys.exit(1)
+
+
 def main():
     opts = PETSc.Options()
     n, nu = opts.getInt("n", 8), opts.getReal("nu", 0.3)
     if n < 1 or not 0 <= nu < 0.5:
-        raise SystemExit(f"elasticity.py: -n {n} -nu {nu}: need at least one element and 0 <= nu < 0.5")
+        fail(f"elasticity.py: -n {n} -nu {nu}: need at least one element and 0 <= nu < 0.5")
     comm = PETSc.COMM_WORLD
     rank, size = comm.getRank(), comm.getSize()
     layer = (n + 1) ** 2
@@ -90,7 +98,7 @@ def main():
     PETSc.Sys.Print(f"dofs {A.getSize()[0]} ranks {size} pc {ksp.getPC().getType()} iterations {ksp.getIterationNumber()} "
                     f"reason {ksp.getConvergedReason()} residual {r.norm() / b.norm():.3e}", comm=comm)
     if ksp.getConvergedReason() < 0:
-        raise SystemExit(f"elasticity.py: the solve diverged (KSPConvergedReason {ksp.getConvergedReason()})")
+        fail(f"elasticity.py: the solve diverged (KSPConvergedReason {ksp.getConvergedReason()})")
 
 
 if __name__ == "__main__":

@@ -274,7 +274,9 @@ static PetscErrorCode PCGDSWSetLocalPrecision_GDSW(PC pc, PCGDSWLocalPrecision p
    them, and its true residual stalls while its estimate goes on falling (Q1 elasticity: a true
    relative residual of 7e-6, against 5e-10 with double factors, for a tolerance of 1e-12). CG
    updates its residual with the operator, and FGMRES keeps each preconditioned vector, so both
-   converge as with double factors (FGMRES: 1e-12 with either).
+   converge as with double factors (FGMRES: 1e-12 with either). So at each solve in which factors
+   are kept in single precision, a `KSP` other than CG, FCG, FGMRES, GCR, Richardson or preonly
+   with a relative tolerance below 1e-4 stops with an error that says so.
 
    Only symmetric operators are affected: LU factors (UMFPACK), incomplete factors and the
    interior solves of the harmonic extension stay in double precision. An explicit

@@ -271,7 +271,7 @@ static PetscErrorCode Extend(PC pc, Subdomain &s, MatReuse reuse)
   PetscCall(KSPSetOptionsPrefix(ksp, ((PetscObject)pc)->prefix));
   PetscCall(KSPAppendOptionsPrefix(ksp, "pc_gdsw_extension_"));
   PetscCall(GDSWDefaultFactorSolver(ksp, nullptr, gd->symmetric));
-  PetscCall(KSPSetFromOptions(ksp));
+  PetscCall(GDSWKSPSetFromOptions(ksp));
   PetscCall(KSPSetOperators(ksp, s.AII, s.AII));
   PetscCall(GDSWSetUpLocalSolver(pc, ksp, s, gdsw::INTERIOR));
   PetscCall(KSPMatSolve(ksp, B, s.PhiI));

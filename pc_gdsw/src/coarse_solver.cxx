@@ -50,7 +50,7 @@ PetscErrorCode GDSWSetUpCoarseSolver(PC pc, PetscBool basisCurrent)
     PetscCall(KSPAppendOptionsPrefix(gd->coarseKsp, "pc_gdsw_coarse_"));
     PetscCall(GDSWDefaultFactorSolver(gd->coarseKsp, MATSOLVERMUMPS, gd->symmetric));
     PetscCall(KSPSetOperators(gd->coarseKsp, gd->A0, gd->A0));
-    PetscCall(KSPSetFromOptions(gd->coarseKsp));
+    PetscCall(GDSWKSPSetFromOptions(gd->coarseKsp));
     PetscCall(KSPGetPC(gd->coarseKsp, &cpc));
     PetscCall(PetscObjectTypeCompareAny((PetscObject)cpc, &isMumps, PCLU, PCCHOLESKY, ""));
     if (floating && isMumps) {

@@ -405,7 +405,7 @@ PetscErrorCode GDSWSetUpFirstLevel(PC pc, MatReuse reuse)
       PetscCall(KSPSetOptionsPrefix(s.ksp, ((PetscObject)pc)->prefix));
       PetscCall(KSPAppendOptionsPrefix(s.ksp, "pc_gdsw_sub_"));
       PetscCall(DefaultLocalSolver(pc, s.ksp, gd->localSolver != PC_GDSW_LOCAL_EXACT));
-      PetscCall(KSPSetFromOptions(s.ksp));
+      PetscCall(GDSWKSPSetFromOptions(s.ksp));
     }
     PetscCall(KSPSetOperators(s.ksp, s.Aovl, s.Aovl));
     PetscCall(GDSWSetUpLocalSolver(pc, s.ksp, s, gdsw::OVERLAPPING));

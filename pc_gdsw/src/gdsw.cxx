@@ -6,6 +6,7 @@
    creation and registration. The options are read in options.cxx, the public functions with the
    methods they call are in api_subdomains.cxx, api_coarse_space.cxx and api_first_level.cxx. */
 #include "gdswimpl.h"
+#include <algorithm>
 #include <string>
 
 const char *const PCGDSWCoarseSpaceTypes[] = {"gdsw", "rgdsw", "none", "PCGDSWCoarseSpaceType", "PC_GDSW_COARSE_", nullptr};
@@ -175,6 +176,44 @@ static PetscErrorCode GetAIJOperator(PC pc, MatReuse reuse)
   PetscFunctionReturn(0);
 }
 
+/* A NaN or Inf among the operator's values makes a factorisation fail with a zero pivot or
+   return NaN: say what it is, with its row, before any factorisation sees it. */
+static PetscErrorCode CheckFinite(PC pc)
+{
+  PC_GDSW        *gd = (PC_GDSW *)pc->data;
+  Mat             part[2] = {gd->A, nullptr};
+  const PetscInt *colmap = nullptr;
+  PetscInt        rstart, cstart;
+  PetscBool       mpi;
+
+  PetscFunctionBegin;
+  PetscCall(PetscObjectTypeCompare((PetscObject)gd->A, MATMPIAIJ, &mpi));
+  if (mpi) PetscCall(MatMPIAIJGetSeqAIJ(gd->A, &part[0], &part[1], &colmap));
+  PetscCall(MatGetOwnershipRange(gd->A, &rstart, nullptr));
+  PetscCall(MatGetOwnershipRangeColumn(gd->A, &cstart, nullptr));
+  for (PetscInt k = 0; k < 2 && part[k]; k++) {
+    const PetscInt    *ia, *ja;
+    const PetscScalar *v;
+    PetscInt           n, bad = -1;
+    PetscBool          done;
+    PetscCall(MatGetRowIJ(part[k], 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+    PetscCall(MatSeqAIJGetArrayRead(part[k], &v));
+    for (PetscInt j = 0; j < ia[n] && bad < 0; j++)
+      if (PetscIsInfOrNanScalar(v[j])) bad = j;
+    if (bad >= 0) {
+      const PetscInt    row = (PetscInt)(std::upper_bound(ia, ia + n + 1, bad) - ia) - 1;
+      const PetscInt    col = k ? colmap[ja[bad]] : cstart + ja[bad];
+      const PetscScalar a   = v[bad];
+      PetscMPIInt       rank;
+      PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)pc), &rank));
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FP, "PCGDSW: the matrix has a non-finite entry (%s) in row %" PetscInt_FMT ", column %" PetscInt_FMT " (rank %d): the operator's values must be finite; this is no zero pivot, and no shift helps", PetscIsNanScalar(a) ? "nan" : "inf", rstart + row, col, rank);
+    }
+    PetscCall(MatSeqAIJRestoreArrayRead(part[k], &v));
+    PetscCall(MatRestoreRowIJ(part[k], 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+  }
+  PetscFunctionReturn(0);
+}
+
 /* step() with the blocks it keeps (the subdomain matrices, the first level's factors) on huge
    pages. Not the harmonic extension: its factors and right-hand sides are freed subdomain by
    subdomain, and malloc()'s heap recycles them without a page fault. */
@@ -204,12 +243,14 @@ static PetscErrorCode SetUp(PC pc)
   if (!fresh) {
     /* MatZeroRows() on other rows keeps the pattern but changes which dofs Phi must exclude */
     PetscCall(GetAIJOperator(pc, MAT_REUSE_MATRIX));
+    PetscCall(CheckFinite(pc));
     PetscCall(GDSWDirichletRowsChanged(pc, &fresh));
     if (fresh) PetscCall(PetscInfo(pc, "the operator's Dirichlet rows changed with the same pattern: the decomposition and the coarse space are rebuilt\n"));
   }
   if (fresh) {
     PetscCall(PCReset_GDSW(pc));
     PetscCall(GetAIJOperator(pc, MAT_INITIAL_MATRIX));
+    PetscCall(CheckFinite(pc));
     PetscCall(PetscLogEventBegin(GDSW_Decomposition, pc, 0, 0, 0));
     PetscCall(GDSWBuildDecomposition(pc));
     PetscCall(OnHugePages(pc, [&] { return GDSWExtractSubdomainMatrices(pc, MAT_INITIAL_MATRIX); }));
@@ -248,6 +289,35 @@ static PetscErrorCode PCSetUp_GDSW(PC pc)
   PetscErrorCode ierr = SetUp(pc);
   PetscCall(GDSWSerialRegionsEnd(levels));
   PetscCall(ierr);
+  PetscFunctionReturn(0);
+}
+
+/* Single-precision local factors make the preconditioner linear only to about 1e-7 of each
+   application. CG (its residual updated with the operator), the flexible methods (each
+   preconditioned vector kept) and Richardson converge as with double factors; GMRES and the other
+   methods that form their solution from many applications lose that rounding: their residual
+   estimate goes on falling while the true residual stalls (Q1 elasticity: 3e-6 to 7e-6, reported
+   CONVERGED_RTOL at 1e-10). Such a method is refused below a tolerance of 1e-4, a factor 10 above
+   the stall measured; the KSP is known only here, at the solve. */
+static PetscErrorCode PCPreSolve_GDSW(PC pc, KSP ksp, Vec b, Vec x)
+{
+  PC_GDSW  *gd = (PC_GDSW *)pc->data;
+  PetscInt  single = 0;
+  PetscBool exact;
+  PetscReal rtol;
+  KSPType   type;
+
+  PetscFunctionBegin;
+  if (gd->localPrecision != PC_GDSW_LOCAL_PRECISION_SINGLE) PetscFunctionReturn(0);
+  for (const gdsw::Subdomain &s : *gd->sub) single += s.factorisation[gdsw::OVERLAPPING] == gdsw::CHOLESKY_SINGLE;
+  PetscCallMPI(MPIU_Allreduce(MPI_IN_PLACE, &single, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)pc)));
+  if (!single) PetscFunctionReturn(0);
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)ksp, &exact, KSPCG, KSPFCG, KSPPIPEFCG, KSPFGMRES, KSPPIPEFGMRES, KSPGCR, KSPPIPEGCR, KSPRICHARDSON, KSPPREONLY, ""));
+  PetscCall(KSPGetTolerances(ksp, &rtol, nullptr, nullptr, nullptr));
+  PetscCall(KSPGetType(ksp, &type));
+  PetscCheck(exact || rtol >= 1e-4, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_INCOMP,
+             "PCGDSW: %s single keeps %" PetscInt_FMT " local factors in single precision, with which KSP %s stalls near a true relative residual of 1e-5 while it reports convergence: it cannot reach its -ksp_rtol %g. Use -ksp_type fgmres (or cg for a symmetric positive definite operator), or %s double",
+             GDSWOptionName(pc, "-pc_gdsw_local_precision").c_str(), single, type, (double)rtol, GDSWOptionName(pc, "-pc_gdsw_local_precision").c_str());
   PetscFunctionReturn(0);
 }
 
@@ -413,7 +483,7 @@ static PetscErrorCode PCDestroy_GDSW(PC pc)
 .  -pc_gdsw_huge_pages <true> - during set-up, the blocks of 2 MiB or more that it keeps (local factors, subdomain matrices) on transparent huge pages where the kernel gives them on request (see `PCGDSWSetHugePages()`)
 .  -pc_gdsw_local_solver <exact> - exact, incomplete or adaptive local solvers of the first level (see `PCGDSWSetLocalSolverType()`)
 .  -pc_gdsw_local_condition_max <25> - the adaptive local solvers' bound (see `PCGDSWSetLocalConditionMax()`)
--  -pc_gdsw_local_precision <double> - single: the first level's Cholesky factors kept in single precision where that solves to within 1e-3 of double, for CG and FGMRES (see `PCGDSWSetLocalPrecision()`)
+-  -pc_gdsw_local_precision <double> - single: the first level's Cholesky factors kept in single precision where that solves to within 1e-3 of double, for CG and FGMRES (other KSPs are refused below a -ksp_rtol of 1e-4; see `PCGDSWSetLocalPrecision()`)
 
    Notes:
    The subdomains are, in this order of preference, the application's (`PCGDSWSetSubdomains()`),
@@ -480,6 +550,7 @@ PETSC_EXTERN PetscErrorCode PCCreate_GDSW(PC pc)
   pc->ops->setup          = PCSetUp_GDSW;
   pc->ops->apply          = PCApply_GDSW;
   pc->ops->applytranspose = PCApplyTranspose_GDSW;
+  pc->ops->presolve       = PCPreSolve_GDSW;
   pc->ops->reset          = PCReset_GDSW;
   pc->ops->destroy        = PCDestroy_GDSW;
   pc->ops->setfromoptions = GDSWSetFromOptions;

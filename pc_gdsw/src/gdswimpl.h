@@ -17,7 +17,8 @@
      platform/ordering.cxx      nested dissection of the node graph for the local factorisations
      platform/threads.cxx       one thread per rank while the set-up factors
      platform/huge_pages.cxx    the local factors on transparent huge pages
-     platform/single_factor.cxx the first level's Cholesky factors kept in single precision */
+     platform/single_factor.cxx the first level's Cholesky factors kept in single precision
+     platform/help_prefix.cxx   -help with the whole prefix of the inner solvers (PETSc 3.18 cuts long ones) */
 #pragma once
 
 #include <petscgdsw.h>
@@ -202,6 +203,7 @@ PETSC_INTERN PetscErrorCode GDSWRegisterSingleFactor(void);
 PETSC_INTERN PetscErrorCode GDSWFactorIsSingle(Mat, PetscBool *);
 PETSC_INTERN PetscErrorCode GDSWSerialRegionsBegin(PetscInt *);
 PETSC_INTERN PetscErrorCode GDSWSerialRegionsEnd(PetscInt);
+PETSC_INTERN PetscErrorCode GDSWKSPSetFromOptions(KSP); /* KSPSetFromOptions(), -help with the whole prefix */
 PETSC_INTERN PetscErrorCode GDSWHugePagesBegin(PC, PetscBool, PetscBool *, size_t *);
 PETSC_INTERN PetscErrorCode GDSWHugePagesEnd(PetscBool, size_t, size_t *);
 PETSC_INTERN void          *GDSWHugeMalloc(size_t);
