@@ -2,8 +2,8 @@
 /* PCGDSW: two-level overlapping Schwarz with the GDSW coarse space (Dohrmann, Klawonn,
    Widlund 2008; Heinlein, Klawonn, Rheinbach 2015, eq. 1):
        M^{-1} = Phi (Phi^T A Phi)^{-1} Phi^T + sum_i R_i^T A_i^{-1} R_i.
-   This file holds the PC object: the order of the setup modules, apply and its transpose, view,
-   creation and registration. The options are read in options.cxx, the public functions with the
+   This file holds the PC object: the operator's checks, the order of the setup modules, the
+   solve's check of its KSP, apply and its transpose, view, creation and registration. The options are read in options.cxx, the public functions with the
    methods they call are in api_subdomains.cxx, api_coarse_space.cxx and api_first_level.cxx. */
 #include "gdswimpl.h"
 #include <algorithm>

@@ -8,7 +8,8 @@
      coarse_solver.cxx  the solver of A_0
      first_level.cxx    local solvers on Omega_i^delta and their restriction/prolongation
    around them the PC object:
-     gdsw.cxx           setup order, apply and its transpose, view, creation, registration
+     gdsw.cxx           the operator's checks, setup order, the solve's check of its KSP, apply and
+                        its transpose, view, creation, registration
      options.cxx        the -pc_gdsw_* options: one table row each, read and checked in one pass
      api_subdomains.cxx, api_coarse_space.cxx, api_first_level.cxx
                         the public functions with their manual pages, each beside the composed
