@@ -65,6 +65,71 @@ def layout_floors():
 
 
 @case
+def make_meshes_tube():
+    """scripts/make-meshes makes a tube of any size into a file of the user's (nothing is written
+    into the source tree): its fluid region holds pi Ri^2 L and its wall pi (Ro^2 - Ri^2) L to
+    within 1 % (the circle's polygonal approximation at h = Ri / 6), every group of the tube
+    scenes is there (fsi_mesh_info), and a wrong size stops the script, exit 2, before gmsh runs."""
+    tmp = tempfile.mkdtemp()
+    mesh = os.path.join(tmp, "carotid.msh")
+    script = os.path.join(TOP, "scripts", "make-meshes")
+    before = sorted(os.listdir(MESHES))
+    Ri, Ro, L = 0.3, 0.37, 1.0
+    subprocess.run([str(a) for a in (script, "tube", "--Ri", Ri, "--Ro", Ro, "--L", L, "--h", 0.05, "--layers", 1, "--out", mesh)], check=True)
+    assert sorted(os.listdir(MESHES)) == before
+    volume = gmsh_region_volumes(mesh)
+    print("region volumes", volume)
+    between(volume["fluid"] / (math.pi * Ri**2 * L), 0.99, 1.0, "fluid volume / pi Ri^2 L")
+    between(volume["wall"] / (math.pi * (Ro**2 - Ri**2) * L), 0.99, 1.01, "wall volume / pi (Ro^2 - Ri^2) L")
+    g, _ = groups(mesh, 1, TUBE_GROUPS)
+    assert all(g[name][0] + g[name][1] > 0 for name in TUBE_GROUPS.split(",")), g
+    for bad, msg in ((["--Ri", 0.4, "--Ro", 0.3, "--L", 1, "--h", 0.1, "--layers", 1, "--out", mesh], "--Ri 0.4 must be less than --Ro 0.3"),
+                     (["--Ri", 0.3, "--Ro", 0.4, "--L", -1, "--h", 0.1, "--layers", 1, "--out", mesh], "--L -1: give a positive number"),
+                     (["--Rx", 1], "unknown option or missing value: --Rx")):
+        p = subprocess.run([script, "tube"] + [str(b) for b in bad], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        assert p.returncode == 2 and msg in p.stdout, (bad, p.returncode, p.stdout)
+    shutil.rmtree(tmp)
+
+
+def gmsh_region_volumes(path):
+    """The volume of each physical group of 3-D cells of a gmsh 4.1 ASCII file, from its
+    tetrahedra's vertices."""
+    text = open(path).read().split("\n")
+    names = {}
+    k = text.index("$PhysicalNames")
+    for line in text[k + 2:text.index("$EndPhysicalNames")]:
+        dim, tag, name = line.split(maxsplit=2)
+        if dim == "3":
+            names[int(tag)] = name.strip('"')
+    k = text.index("$Entities")
+    npts, ncur, nsur, nvol = map(int, text[k + 1].split())
+    physical = {}
+    for line in text[k + 2 + npts + ncur + nsur:k + 2 + npts + ncur + nsur + nvol]:
+        w = line.split()
+        tags = [int(t) for t in w[8:8 + int(w[7])]]
+        physical[int(w[0])] = [names[t] for t in tags if t in names]
+    xyz, k = {}, text.index("$Nodes")
+    blocks, k = int(text[k + 1].split()[0]), k + 2
+    for _ in range(blocks):
+        n = int(text[k].split()[3])
+        for tag, coords in zip(text[k + 1:k + 1 + n], text[k + 1 + n:k + 1 + 2 * n]):
+            xyz[int(tag)] = [float(c) for c in coords.split()[:3]]
+        k += 1 + 2 * n
+    volume, k = {}, text.index("$Elements")
+    blocks, k = int(text[k + 1].split()[0]), k + 2
+    for _ in range(blocks):
+        dim, entity, kind, n = map(int, text[k].split())
+        for line in text[k + 1:k + 1 + n] if kind in (4, 11) else []:
+            a, b, c, d = (xyz[int(t)] for t in line.split()[1:5])
+            u, v, w = ([q[i] - a[i] for i in range(3)] for q in (b, c, d))
+            det = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])
+            for name in physical.get(entity, []):
+                volume[name] = volume.get(name, 0) + abs(det) / 6
+        k += 1 + n
+    return volume
+
+
+@case
 def bench_command_line():
     """Every benchmark script prints its usage on --help, and stops before any run on an option or
     a mode it does not take, or an option without its value, naming what it takes (a sweep that

@@ -91,6 +91,19 @@ def refused(cmd, msg, np=1, cwd=TOP):
     return out
 
 
+def paraview_reads(xdmf, png, warp=1):
+    """What ParaView (pvbatch, scripts/render_xdmf.py) reads of a series and renders to png:
+    frames, points, cells and the largest displacement of the last frame."""
+    for attempt in range(3):  # xvfb-run -a can lose the race for a display number to another X client
+        out = subprocess_out(["xvfb-run", "-a", "-s", "-screen 0 1600x1200x24", "-e", "/dev/stdout", "pvbatch", os.path.join(TOP, "scripts", "render_xdmf.py"), xdmf, png, warp])
+        print(out[-2000:])
+        if "frames" in out and os.path.exists(png):
+            break
+    m = re.search(r"frames (\d+) last time (\S+) points (\d+) cells (\d+) displacement magnitude (\S+) (\S+)", out)
+    assert m, out[-2000:]
+    return {"frames": int(m.group(1)), "points": int(m.group(3)), "cells": int(m.group(4)), "displacement_max": float(m.group(6))}
+
+
 def subprocess_out(cmd):
     return subprocess.run([str(c) for c in cmd], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True).stdout
 

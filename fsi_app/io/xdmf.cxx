@@ -31,31 +31,51 @@ static void WriteGrid(FILE *fp, const XdmfPart &s, const std::string &h5, size_t
   std::fprintf(fp, "%s</Grid>\n", indent);
 }
 
-static PetscErrorCode WriteXdmf(const XdmfSeries &s)
+/* The series of `parts` in `file`: one part a temporal collection of its grids, several a
+   spatial collection per frame. Written to a temporary file and renamed: always whole. */
+static PetscErrorCode WriteSeries(const XdmfSeries &s, const std::string &file, const std::vector<const XdmfPart *> &parts)
 {
-  PetscMPIInt rank;
-  FILE       *fp;
-  std::string h5 = s.h5.substr(s.h5.find_last_of('/') + 1); /* beside the .xdmf */
+  const std::string h5 = s.h5.substr(s.h5.find_last_of('/') + 1), tmp = file + ".tmp"; /* the data beside the .xdmf */
+  FILE             *fp = std::fopen(tmp.c_str(), "w");
 
   PetscFunctionBegin;
-  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)s.dm), &rank));
-  if (rank) PetscFunctionReturn(0);
-  const std::string tmp = s.xdmf + ".tmp";
-  fp                    = std::fopen(tmp.c_str(), "w");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot write the file", s.xdmf.c_str());
-  std::fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Temporal\">\n", s.parts.size() == 1 ? s.parts[0].fields[0].name.c_str() : "solution");
+  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot write the file %s", s.xdmf.c_str(), file.c_str());
+  std::fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n  <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Temporal\">\n", parts.size() == 1 ? parts[0]->name.c_str() : "solution");
   for (size_t k = 0; k < s.times.size(); k++) {
-    if (s.parts.size() == 1) WriteGrid(fp, s.parts[0], h5, k, s.times[k], "   ");
+    if (parts.size() == 1) WriteGrid(fp, *parts[0], h5, k, s.times[k], "   ");
     else {
       std::fprintf(fp, "   <Grid Name=\"frame %zu\" GridType=\"Collection\" CollectionType=\"Spatial\">\n    <Time Value=\"%.10g\"/>\n", k, (double)s.times[k]);
-      for (const XdmfPart &p : s.parts) WriteGrid(fp, p, h5, k, s.times[k], "    ");
+      for (const XdmfPart *p : parts) WriteGrid(fp, *p, h5, k, s.times[k], "    ");
       std::fprintf(fp, "   </Grid>\n");
     }
   }
   std::fprintf(fp, "  </Grid>\n </Domain>\n</Xdmf>\n");
   std::fclose(fp);
-  PetscCheck(std::rename(tmp.c_str(), s.xdmf.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: cannot rename %s", s.xdmf.c_str(), tmp.c_str());
+  PetscCheck(std::rename(tmp.c_str(), file.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: cannot rename %s", s.xdmf.c_str(), tmp.c_str());
   PetscFunctionReturn(0);
+}
+
+/* The whole series and, with several parts, each part alone in <name>_<part>.xdmf: ParaView's
+   XDMF reader takes a spatial collection for pieces of one dataset (the wall and the fluid
+   merged, their fields mixed), a file of one part for a dataset of its own. */
+static PetscErrorCode WriteXdmf(const XdmfSeries &s)
+{
+  PetscMPIInt                  rank;
+  std::vector<const XdmfPart *> all;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)s.dm), &rank));
+  if (rank) PetscFunctionReturn(0);
+  for (const XdmfPart &p : s.parts) all.push_back(&p);
+  PetscCall(WriteSeries(s, s.xdmf, all));
+  if (all.size() > 1)
+    for (const XdmfPart *p : all) PetscCall(WriteSeries(s, XdmfPartFile(s.xdmf, p->name), {p}));
+  PetscFunctionReturn(0);
+}
+
+std::string XdmfPartFile(const std::string &xdmf, const std::string &part)
+{
+  return xdmf.substr(0, xdmf.size() - 5) + "_" + part + ".xdmf";
 }
 
 /* The global numbering of the field's nodes: each rank numbers the node points it owns after

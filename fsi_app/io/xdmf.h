@@ -5,7 +5,9 @@
    node numbering from one P2 field's cells, written once, and per frame one dataset
    <part>/fields/<name>_<k> per field: P2 fields at their nodes, P1 fields (pressure) at the
    vertices and, linearly, at the edge midpoints. Several parts are a spatial collection per
-   frame (ParaView shows them as one multiblock time series); one part has no group prefix. */
+   frame; one part has no group prefix. With several parts each is also written alone,
+   <name>_<part>.xdmf (XdmfPartFile): ParaView's reader takes a spatial collection for pieces of
+   one dataset, a file of one part for a dataset of its own. */
 #pragma once
 
 #include "discretization/cells.h"
@@ -50,6 +52,8 @@ struct XdmfSeries {
    continues. */
 PetscErrorCode XdmfOpen(const char *file, DM dm, const std::vector<OutputPart> &parts, const std::vector<PetscReal> &times, XdmfSeries &s);
 PetscErrorCode XdmfWriteFrame(XdmfSeries &s, PetscReal t, Vec x);
+/* The file of one part of the series `xdmf`: <name>_<part>.xdmf. */
+std::string XdmfPartFile(const std::string &xdmf, const std::string &part);
 PetscErrorCode XdmfClose(XdmfSeries &s);
 
 } // namespace fsi
