@@ -452,13 +452,16 @@ def mesh_not_a_file():
 def inflow_on_coupled_wall():
     """-fluid_inflow_velocity on the coupled tube: the inlet's rim nodes lie on the wall and move
     with it (u = d_t d_s, the coupling's row), so the interface velocity jump is round-off (it was
-    the imposed 10 cm/s, without a word), and the volume balance holds."""
+    the imposed 10 cm/s, without a word), and the volume balance holds; the inlet flux's sign is
+    explained where it is printed."""
     tmp = tempfile.mkdtemp()
     r = os.path.join(tmp, "r.json")
-    run([APP] + FSI_SCENE + ["-t_final", 1e-3, "-fluid_inlet_pressure", 0, "-structure_pressure", 0, "-fluid_inflow_velocity", "0,0,10", "-report", r], 2)
+    out = run([APP] + FSI_SCENE + ["-t_final", 1e-3, "-fluid_inlet_pressure", 0, "-structure_pressure", 0, "-fluid_inflow_velocity", "0,0,10", "-report", r], 2)
     res = report(r)["results"]
     print(res)
     assert res["interface_velocity_jump"] < 1e-12 and res["volume_balance"] < 1e-12 * res["max_inflow"], res
+    # the inlet's flux is negative: the summary says why (it did not)
+    assert res["inlet_flux"] < 0 and "(int u.n with the outward normal: an inflow is negative)" in out, out[-1500:]
     shutil.rmtree(tmp)
 
 
