@@ -82,7 +82,7 @@ PetscErrorCode OptionReader::Help(const char *name, const std::string &value, co
 
   PetscFunctionBegin;
   if (!PetscOptionsObject->printhelp || PetscOptionsObject->count != 1 || PetscOptionsObject->alreadyprinted) PetscFunctionReturn(0);
-  if (value != def) note += (note.empty() ? "" : "; ") + std::string("default ") + (def.empty() ? "none" : def);
+  if (value != def) note += (note.empty() ? "" : "; ") + std::string("default ") + (def.empty() ? "empty" : def);
   PetscCall((*PetscHelpPrintf)(PetscOptionsObject->comm, "  %s <%s>: %s%s\n", name, value.c_str(), text, note.empty() ? "" : (" (" + note + ")").c_str()));
   PetscFunctionReturn(0);
 }

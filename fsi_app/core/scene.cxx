@@ -28,7 +28,7 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "fsi_app: the scene (each block's options follow under its own title)", nullptr);
   const OptionReader opt{PetscOptionsObject, sc.problem};
   PetscCall(opt.String("-blocks", "the blocks of the scene, comma separated, from structure, fluid, geometry, coupling: structure,fluid,geometry,coupling is the coupled problem; fluid,geometry a fluid on a mesh moved by a prescribed interface displacement (ALE)", blocks, sizeof(blocks), PROBLEM));
-  PetscCall(opt.String("-mesh", "gmsh mesh file", sc.mesh, sizeof(sc.mesh), PROBLEM));
+  PetscCall(opt.String("-mesh", "gmsh mesh file (named in an options file: relative to that file)", sc.mesh, sizeof(sc.mesh), PROBLEM));
   PetscCall(opt.Int("-refine", "uniform refinements of the mesh after distribution (each multiplies the cells by 8)", &sc.refine, NonNegative, PROBLEM));
   PetscCall(opt.Int("-mesh_order", "the cells' geometry: 2 curved (isoparametric P2) by the file's second-order nodes, 1 straight (the vertices only), 0 as the file is", &sc.meshOrder, Range{0, 2}, PROBLEM));
   PetscCall(opt.Real("-dt", "time step (s); 0 solves the static problem", &sc.dt, NonNegative, RUN)); /* the checkpoint's header compares it */

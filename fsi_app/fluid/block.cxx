@@ -71,7 +71,7 @@ PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &probl
   PetscCall(r.Bool("-fluid_shape_derivatives", "on a moving mesh, the fluid's Jacobian holds its derivative in the mesh displacement (exact Newton); false: quasi-Newton", &o.shapeDerivatives, RUN));
   n = 3;
   PetscBool set;
-  PetscCall(r.Reals("-poiseuille", "verification: Hagen-Poiseuille flow in a tube of radius R and length L along z driven by a pressure drop: R,L,dp", o.poiseuille, &n, &set, Any, PROBLEM));
+  PetscCall(r.Reals("-poiseuille", "verification: Hagen-Poiseuille flow in a tube of radius R and length L along z driven by a pressure drop: R,L,dp (cm, cm, dyn/cm^2)", o.poiseuille, &n, &set, Any, PROBLEM));
   PetscCheck(!set || (n == 3 && o.poiseuille[0] > 0 && o.poiseuille[1] > 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-poiseuille: give R,L,dp with R > 0 and L > 0");
   PetscCall(r.Enum("-mms_flow", "-mms: the manufactured flow (exact velocity on the boundary but -fluid_outlet, exact traction there)", FlowMMSKindNames, &o.mmsFlow, PROBLEM));
   PetscCall(r.Real("-mms_ramp", "-mms: the trigonometric manufactured flow rises as sin^2(pi t / 2T) over this time T (s); 0: steady", &o.mmsRamp, NonNegative, PROBLEM));
