@@ -466,6 +466,34 @@ def inflow_on_coupled_wall():
 
 
 @case
+def waveform_bad():
+    """A waveform file missing, empty, with one sample, times that do not increase, a NaN, a
+    line of three numbers, a last value that does not repeat the first; a Fourier series without
+    coefficients or with T <= 0; a waveform with another inlet condition, or in statics: one
+    sentence naming the option and the file (and line), before the mesh is read."""
+    tmp = tempfile.mkdtemp()
+    f = lambda name: os.path.join(tmp, name)
+    base = [APP, "-options_file", os.path.join(SCENES, "fluid_tube1_pulse.opts"), "-fluid_inlet_pressure", 0]
+    files = {"empty.dat": "# nothing\n", "one.dat": "0 1\n", "back.dat": "0 1\n0.5 2\n0.4 3\n1 1\n", "nan.dat": "0 1\n0.5 nan\n0.7 2\n1 1\n",
+             "three.dat": "0 1 2\n", "open.dat": "0 1\n0.3 2\n0.6 3\n1 4\n", "good.dat": "0 1\n0.3 2\n0.6 3\n1 1\n"}
+    for name, text in files.items():
+        open(f(name), "w").write(text)
+    option = "-fluid_inlet_pressure_waveform"
+    for name, msg in (("missing.dat", "no such file"), ("empty.dat", "0 samples; give at least 4"), ("one.dat", "1 samples; give at least 4"),
+                      ("back.dat", "line 3: the time 0.4 does not follow the previous one: the times must increase"),
+                      ("nan.dat", "line 2: '0.5 nan': the time and the value must be finite"), ("three.dat", "line 1: give two numbers, the time and the value"),
+                      ("open.dat", "the last sample's value differs from the first's")):
+        out = refused(base + [option, f(name)], msg, np=2)
+        assert f"{option} {f(name)}" in out, out[-2000:]
+    refused(base + ["-fluid_inlet_pressure_fourier", "0.01"], "-fluid_inlet_pressure_fourier: give the period and the coefficients, T,a0,a1,b1,a2,b2,... (got 1 values)")
+    refused(base + ["-fluid_inlet_pressure_fourier", "0,1"], "-fluid_inlet_pressure_fourier: the period T (the first value) must be positive (got 0)")
+    refused(base + [option, f("good.dat"), "-fluid_inlet_pressure", 100], f"{option}: the inlet cannot also take")
+    refused(base + [option, f("good.dat"), "-fluid_inlet_pressure_fourier", "1,2"], f"{option}: the inlet cannot also take")
+    refused(base + [option, f("good.dat"), "-dt", 0], f"{option}: the inlet pressure is a function of time: give a time step (-dt)")
+    shutil.rmtree(tmp)
+
+
+@case
 def report_norms():
     """The report's displacement_norm is the 2-norm of the wall's displacement alone (it was the
     whole solution's, pressure included): on the coupled tube it lies between the largest

@@ -4,6 +4,8 @@
 Poiseuille, the pulse, the manufactured ALE flows, shape derivatives, geometric conservation,
 the harmonic extension. Each case runs fsi_app and asserts numbers of its run report
 (tests/fsilib.py) against references independent of the code."""
+import math
+
 from fsilib import *  # noqa: F401,F403 (the cases' shared runners, meshes and scenes)
 from testlib import between, case, main, run
 
@@ -80,6 +82,38 @@ def fluid_pulse():
     listing = subprocess_out(["h5ls", "-r", os.path.join(tmp, "flow.h5")])
     assert len(re.findall(r"/fields/velocity_\d+ +Dataset \{1894, 3\}", listing)) == 9, listing
     assert len(re.findall(r"/fields/pressure_\d+ +Dataset \{1894\}", listing)) == 9, listing
+    shutil.rmtree(tmp)
+
+
+@case
+def fluid_pressure_waveform():
+    """The inlet pressure as a signal of time, in the rigid tube #1 (2 ranks, backward Euler,
+    dt 1 ms past one period of T = 10 ms): a Fourier series of its mean alone (T,1330) is the
+    constant pressure of -fluid_inlet_pressure to round-off; samples of
+    p = 1000 + 500 sin(2 pi t/T) + 200 cos(4 pi t/T) (64 per period, periodic cubic spline)
+    give its Fourier series' flow within the spline's error bound 5/384 h^4 max|p^(4)| (4.4e-3
+    dyn/cm^2, 4.4e-6 of the mean: the flow is linear in the data), and 16 samples at least 16
+    times farther; the samples, named in an options file, are found beside it."""
+    tmp = tempfile.mkdtemp()
+    base = ["-options_file", os.path.join(SCENES, "fluid_tube1_pulse.opts"), "-t_final", 0.013, "-dt", 1e-3, "-ksp_rtol", 1e-12, "-fluid_inlet_pressure", 0]
+    res = lambda *opts: scene(*base, *opts, np=2)["results"]
+    const = res("-fluid_inlet_pressure", 1330, "-fluid_inlet_pressure_until", 0)
+    mean = res("-fluid_inlet_pressure_fourier", "0.01,1330")
+    for k in ("outlet_flux", "pressure_l2_norm", "velocity_l2_norm"):
+        between(abs(mean[k] / const[k] - 1), 0, 1e-12, f"Fourier mean / constant pressure: {k}")
+    T, p = 0.01, lambda t: 1000 + 500 * math.sin(2 * math.pi * t / T) + 200 * math.cos(4 * math.pi * t / T)
+    fourier = res("-fluid_inlet_pressure_fourier", f"{T},1000,0,500,200,0")
+    err = {}
+    for n in (16, 64):
+        samples = os.path.join(tmp, f"p{n}.dat")
+        open(samples, "w").write("# t (s)  p (dyn/cm^2)\n" + "".join(f"{k * T / n:.17g} {p(k * T / n):.17g}\n" for k in range(n + 1)))
+        opts = os.path.join(tmp, f"inlet{n}.opts")
+        open(opts, "w").write(f"-fluid_inlet_pressure_waveform p{n}.dat\n")  # beside the options file
+        sampled = res("-options_file", opts)
+        err[n] = abs(sampled["outlet_flux"] / fourier["outlet_flux"] - 1)
+    print("relative flux differences to the Fourier series", err)
+    between(err[64], 0, 4.4e-6, "64 samples: |Q / Q_Fourier - 1| (the spline's error bound)")
+    assert err[64] < err[16] / 16, err
     shutil.rmtree(tmp)
 
 

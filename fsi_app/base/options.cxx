@@ -203,21 +203,30 @@ PetscErrorCode OptionReader::Bool(const char *name, const char *text, PetscBool 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode OptionReader::Points(const char *name, const char *text, std::vector<PetscReal> &xyz) const
+PetscErrorCode OptionReader::Numbers(const char *name, const char *text, std::vector<PetscReal> &v, PetscInt max, const char *what, OptionRole role) const
 {
-  PetscReal   v[63] = {0}; /* room for a 21st point: PETSc drops values beyond the array silently */
-  PetscInt    n     = 63;
-  std::string value;
-  PetscBool   given;
+  std::vector<PetscReal> x(max + 1); /* room for one more: PETSc drops values beyond the array silently */
+  PetscInt               n = max + 1;
+  std::string            value;
+  PetscBool              given;
 
   PetscFunctionBegin;
-  PetscCall(Given(name, "x,y,z of each point, separated by commas", value, &given));
-  if (given) PetscCall(PetscOptionsGetRealArray(PetscOptionsObject->options, PetscOptionsObject->prefix, name, v, &n, nullptr));
-  if (given) PetscCall(Check(name, v, n, Any));
-  PetscCheck(!given || n <= 60, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "%s: at most 20 points (got more than 20)", name);
-  PetscCheck(!given || (n > 0 && n % 3 == 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s: give x,y,z for each point (got %" PetscInt_FMT " values)", name, n);
-  if (given) xyz.assign(v, v + n);
-  PetscCall(Help(name, List(xyz.data(), (PetscInt)xyz.size()), "", text, "x,y,z of each point, separated by commas; cm"));
+  PetscCall(Given(name, what, value, &given));
+  if (given) PetscCall(PetscOptionsGetRealArray(PetscOptionsObject->options, PetscOptionsObject->prefix, name, x.data(), &n, nullptr));
+  if (given) PetscCall(Check(name, x.data(), n, Any));
+  PetscCheck(!given || n <= max, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "%s: at most %" PetscInt_FMT " values (got more than %" PetscInt_FMT ")", name, max, max);
+  if (given) v.assign(x.begin(), x.begin() + n);
+  PetscCall(Help(name, List(v.data(), (PetscInt)v.size()), "", text, what));
+  Record(name, role, v.data(), (PetscInt)v.size());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode OptionReader::Points(const char *name, const char *text, std::vector<PetscReal> &xyz) const
+{
+  PetscFunctionBegin;
+  PetscCall(Numbers(name, text, xyz, 63, "x,y,z of each point, separated by commas; cm", RUN)); /* room for a 21st point */
+  PetscCheck(xyz.size() <= 60, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "%s: at most 20 points (got more than 20)", name);
+  PetscCheck(xyz.size() % 3 == 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s: give x,y,z for each point (got %zu values)", name, xyz.size());
   PetscFunctionReturn(0);
 }
 

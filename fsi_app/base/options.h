@@ -45,6 +45,8 @@ struct OptionReader {
   PetscErrorCode Int(const char *name, const char *text, PetscInt *v, const Range &r, OptionRole role) const;
   PetscErrorCode String(const char *name, const char *text, char *v, size_t len, OptionRole role) const;
   PetscErrorCode Bool(const char *name, const char *text, PetscBool *v, OptionRole role) const;
+  /* a list of at most `max` numbers, none by default */
+  PetscErrorCode Numbers(const char *name, const char *text, std::vector<PetscReal> &v, PetscInt max, const char *what, OptionRole role) const;
   /* points x1,y1,z1,x2,... (at most 20) */
   PetscErrorCode Points(const char *name, const char *text, std::vector<PetscReal> &xyz) const;
   /* a choice of a PETSc enum list (names, then the type name, the prefix and a null); a value

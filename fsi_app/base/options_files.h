@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-2-Clause
 /* Options files as fsi_app reads them, before PETSc starts: each `-options_file F` of the
-   command line is replaced, in place, by the options F holds (one or more per line, `#` starts
-   a comment), so an option given later still overrides an earlier one, as with PETSc's own
-   reader. A path that a file names — an included file, -mesh, -restart — is taken relative to
-   that file's folder, or, if nothing is there, to the working directory: a scene and its
+   command line is replaced, in place, by the options F holds (one or more per line, `#` starts a
+   comment), so an option given later still overrides an earlier one, as with PETSc's own reader.
+   A path that a file names — an included file, -mesh, -restart, a waveform — is taken relative
+   to that file's folder, or, if nothing is there, to the working directory: a scene and its
    meshes run from any folder, and from where they are installed (share/fsi_app). A file that
    includes itself, directly or through others, is refused with the chain of files (PETSc's
    reader would recurse until the stack overflows). */

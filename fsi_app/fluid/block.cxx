@@ -63,6 +63,8 @@ PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &probl
   PetscCall(r.Real("-fluid_inlet_pressure", "normal stress: traction -p n on the faces of -fluid_inlet (dyn/cm^2)", &o.inletPressure, Any, PROBLEM));
   PetscCall(r.Real("-fluid_inlet_pressure_until", "the inlet pressure acts while t <= this (s); 0: always (default: -structure_pressure_until)", &o.pulseEnd, NonNegative, PROBLEM));
   PetscCall(r.Enum("-fluid_inlet_pressure_shape", "the inlet pressure over time: step (on at once) or cosine (p (1 - cos(2 pi t / T)) / 2 over [0, T], T = -fluid_inlet_pressure_until)", PulseShapeNames, &o.pulseShape, PROBLEM));
+  PetscCall(r.String("-fluid_inlet_pressure_waveform", "the inlet pressure p(t) from a file of samples 't p' (s, dyn/cm^2) over one period, the last repeating the first; repeated periodically, a periodic cubic spline between samples; traction -p n on -fluid_inlet (named in an options file: relative to that file)", o.pressureWaveform, sizeof(o.pressureWaveform), PROBLEM));
+  PetscCall(r.Numbers("-fluid_inlet_pressure_fourier", "the inlet pressure p(t) = a0 + sum_k a_k cos(2 pi k t/T) + b_k sin(2 pi k t/T) as T,a0,a1,b1,a2,b2,... (s, dyn/cm^2); traction -p n on -fluid_inlet", o.pressureFourier, 41, "numbers separated by commas; T, then at most 20 harmonics", PROBLEM));
   PetscCall(r.Reals("-fluid_inflow_velocity", "prescribed velocity ux,uy,uz on the faces of -fluid_inlet (cm/s; no-slip groups keep u = 0 on their nodes; on a coupled wall the rim moves with the wall)", o.inflowVelocity, &n, &o.inflow, Any, PROBLEM));
   PetscCheck(!o.inflow || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_inflow_velocity: give ux,uy,uz (got %" PetscInt_FMT " values)", n);
   PetscCall(r.Points("-fluid_probes", "points x1,y1,z1,x2,... (at most 20, reference configuration) where the pressure is recorded every step (in the run report); with -fluid_inlet_pressure, when the pulse's front (half its pressure) passes each and the wave speed", o.probes));
@@ -78,6 +80,14 @@ PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &probl
   PetscOptionsEnd();
   PetscCheck(o.pulseShape == PULSE_STEP || o.pulseEnd > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_inlet_pressure_shape cosine needs the hump's length: -fluid_inlet_pressure_until T with T > 0");
   PetscCheck(!o.inflow || (o.inletPressure == 0 && !sc.mms && o.poiseuille[0] == 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_inflow_velocity: the inlet cannot also take -fluid_inlet_pressure, -mms or -poiseuille (one condition per face)");
+  const char *wave = o.pressureWaveform[0] ? "-fluid_inlet_pressure_waveform" : !o.pressureFourier.empty() ? "-fluid_inlet_pressure_fourier" : nullptr;
+  if (wave) { /* a signal of time: checked and read before the mesh */
+    PetscCheck(!(o.pressureWaveform[0] && !o.pressureFourier.empty()) && o.inletPressure == 0 && !o.inflow && !sc.mms && o.poiseuille[0] == 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP,
+               "%s: the inlet cannot also take -fluid_inlet_pressure_waveform or _fourier, -fluid_inlet_pressure, -fluid_inflow_velocity, -mms or -poiseuille (one condition per face)", wave);
+    PetscCheck(sc.Dynamic(), PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "%s: the inlet pressure is a function of time: give a time step (-dt)", wave);
+    if (o.pressureWaveform[0]) PetscCall(WaveformRead(PETSC_COMM_WORLD, wave, o.pressureWaveform, inletPressure));
+    else PetscCall(WaveformFourier(wave, o.pressureFourier.data(), (PetscInt)o.pressureFourier.size(), inletPressure));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -93,10 +103,11 @@ void FluidBlock::Groups(std::vector<GroupUse> &groups) const
   const char *conditions = "fluid's inlet, outlet and no-slip faces";
   groups.push_back({opt.region, "-fluid_region", 3, RegionsRole});
   for (const auto &g : SplitList(opt.noslip)) groups.push_back({g.substr(0, g.find(':')), "-fluid_noslip", 2, conditions});
-  if (opt.inletPressure != 0 || opt.poiseuille[0] > 0 || opt.inflow) groups.push_back({opt.inlet, "-fluid_inlet", 2, conditions});
+  const bool inletNeeded = opt.inletPressure != 0 || opt.poiseuille[0] > 0 || opt.inflow || inletPressure.period > 0;
+  if (inletNeeded) groups.push_back({opt.inlet, "-fluid_inlet", 2, conditions});
   /* the outlet's conditions need it; a stress-free outlet under a pressure or inflow only has its flux reported */
   const bool outletNeeded = opt.poiseuille[0] > 0 || sc.mms;
-  if (outletNeeded || opt.inletPressure != 0 || opt.inflow) groups.push_back({opt.outlet, "-fluid_outlet", 2, conditions, !outletNeeded});
+  if (outletNeeded || inletNeeded) groups.push_back({opt.outlet, "-fluid_outlet", 2, conditions, !outletNeeded});
 }
 
 PetscErrorCode FluidBlock::AddFields(DM dm)
@@ -165,6 +176,12 @@ PetscErrorCode FluidBlock::SetUp(DM dm)
   } else if (opt.poiseuille[0] > 0) { /* the exact flow's traction sigma n at both ends */
     const Poiseuille p = {opt.poiseuille[0], opt.poiseuille[1], opt.poiseuille[2], opt.mu};
     for (const char *g : {opt.inlet, opt.outlet}) PetscCall(addTraction(g, [p](const PetscReal x[3], const PetscReal n[3], PetscReal, PetscReal t[3]) { PoiseuilleTraction(p, x, n, t); }));
+  } else if (inletPressure.period > 0) {
+    const Waveform *w = &inletPressure;
+    PetscCall(addTraction(opt.inlet, [w](const PetscReal *, const PetscReal n[3], PetscReal time, PetscReal t[3]) {
+      const PetscReal p = w->Value(time);
+      for (int d = 0; d < 3; d++) t[d] = -p * n[d];
+    }));
   } else if (opt.inletPressure != 0) {
     const PetscReal p = opt.inletPressure, until = opt.pulseEnd;
     const PetscBool steady = (PetscBool)!sc.Dynamic(), /* time is then the load fraction: continuation in p */

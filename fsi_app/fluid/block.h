@@ -9,6 +9,7 @@
 
 #include "fluid/assembly.h"
 #include "fluid/balance.h"
+#include "base/waveform.h"
 #include "discretization/probes.h"
 #include "verification/mms.h"
 #include "core/scene.h"
@@ -29,6 +30,8 @@ struct FluidOptions {
   PetscReal inletPressure = 0;             /* normal stress -p n on the inlet group (dyn/cm^2) */
   PetscReal pulseEnd = 0;                  /* it acts while t <= pulseEnd (0: always) */
   PulseShape pulseShape = PULSE_STEP;
+  char                   pressureWaveform[PETSC_MAX_PATH_LEN] = ""; /* or p(t) from samples of one period */
+  std::vector<PetscReal> pressureFourier;                          /* or p(t) as a Fourier series T,a0,a1,b1,... */
   PetscReal inflowVelocity[3] = {0, 0, 0}; /* or a prescribed velocity there (cm/s) */
   PetscBool inflow = PETSC_FALSE;
   char      inlet[64] = "inlet", outlet[64] = "outlet";
@@ -83,6 +86,7 @@ private:
   const Block          *mesh    = nullptr;      /* the geometry block, whose d_f moves the mesh (nullptr: a fixed mesh) */
   PetscBool             coupled = PETSC_FALSE;  /* the mesh moves with a coupled wall */
   VolumeBalance         balance;                /* coupled: the volume balance */
+  Waveform              inletPressure;          /* p(t) of -fluid_inlet_pressure_waveform or _fourier (period 0: neither) */
 };
 
 } // namespace fsi
