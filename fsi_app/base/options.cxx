@@ -292,11 +292,13 @@ PetscErrorCode CheckUnusedOptions(MPI_Comm comm, const std::vector<std::string> 
     const std::string name = std::string("-") + (names[i][0] == '-' ? names[i] + 1 : names[i]);
     std::string       closest;
     size_t            best = std::string::npos;
-    for (const std::string &k : Known())
-      if (Distance(name, k) < best) best = Distance(name, k), closest = k;
+    for (const std::string &k : Known()) {
+      const size_t d = Distance(name, k);
+      if (d < best) best = d, closest = k;
+    }
     const bool ours = std::any_of(prefixes.begin(), prefixes.end(), [&](const std::string &p) { return name.compare(1, p.size(), p) == 0; });
     const bool near = best <= (name.size() > 6 ? 2u : 1u);
-    if (ours || near) sentence = name + ": no such option" + (near || ours ? "; did you mean " + closest + "?" : "") + " (-help lists every option)";
+    if (ours || near) sentence = name + ": no such option; did you mean " + closest + "? (-help lists every option)";
   }
   PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
   PetscCheck(sentence.empty(), comm, PETSC_ERR_ARG_WRONG, "%s", sentence.c_str());

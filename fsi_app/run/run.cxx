@@ -112,43 +112,15 @@ static PetscErrorCode Summarize(const Scene &sc, Blocks &b, DM dm, SNES snes, Ve
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode RunScene()
+/* The time steps (or load increments) from the initial state or a restart, with output,
+   checkpoints and the summary. */
+static PetscErrorCode Solve(const Scene &sc, Blocks &b, DM dm, SNES snes, Vec x, RunReport &report)
 {
-  Scene       sc;
-  Blocks      b;
   TimeHistory history;
-  DM          dm;
-  SNES        snes;
-  Vec         x;
-  RunReport   report;
   XdmfSeries  series;
-  PetscBool   initial = PETSC_FALSE, help;
+  PetscBool   initial = PETSC_FALSE;
 
   PetscFunctionBegin;
-  PetscCall(PhasesBegin());
-  PetscCall(ReadScene(sc));
-  PetscCall(CreateBlocks(sc, b));
-  PetscCall(CheckSceneFiles(sc));
-  if (sc.checkpoint[0] || sc.restart[0]) PetscCall(FileDigest(PETSC_COMM_WORLD, sc.mesh, &sc.problem[MeshDigestKey]));
-  PetscCall(CreateSceneMesh(sc, b, &dm));
-  PetscCall(SetUpBlocks(dm, b));
-  PetscCall(DMCreateGlobalVector(dm, &x));
-  PetscCall(PetscObjectSetName((PetscObject)x, "solution"));
-  PetscCall(CountUnknowns(dm, b, report));
-  PetscCall(CreateSolver(sc, dm, b, &snes));
-  PetscCall(PetscOptionsHasHelp(nullptr, &help));
-  if (help) { /* every option of the scene, its blocks and its solver is printed: nothing to solve */
-    if (sc.output[0]) PetscCall(ReleaseFile(PETSC_COMM_WORLD, sc.output));
-    if (sc.checkpoint[0]) PetscCall(ReleaseFile(PETSC_COMM_WORLD, sc.checkpoint));
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "-help: the options are listed above; nothing was solved (run without -help to solve; the splits' inner solvers list their options in -ksp_view)\n"));
-    PetscCall(VecDestroy(&x));
-    PetscCall(SNESDestroy(&snes));
-    PetscCall(DMDestroy(&dm));
-    b = Blocks();
-    PetscFunctionReturn(0);
-  }
-  PetscCall(CheckUnusedOptions(PETSC_COMM_WORLD, b.Prefixes()));
-
   const PetscBool dynamic = sc.Dynamic();
   const PetscReal step    = dynamic ? sc.dt : 1.0 / sc.loadSteps;
   PetscCall(TimeHistoryCreate(dm, sc.scheme, step, dynamic, history));
@@ -192,11 +164,42 @@ PetscErrorCode RunScene()
   PetscCall(RunTimeLoop(loop, first, x, report.steps));
   PetscCall(PetscTime(&t1));
   PetscCall(Summarize(sc, b, dm, snes, x, dynamic ? loop.steps * step : 1.0, t1 - t0, loop.splits, report));
-
   if (sc.output[0]) PetscCall(XdmfClose(series));
+  PetscCall(TimeHistoryDestroy(history));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunScene()
+{
+  Scene     sc;
+  Blocks    b;
+  DM        dm;
+  SNES      snes;
+  Vec       x;
+  RunReport report;
+  PetscBool help;
+
+  PetscFunctionBegin;
+  PetscCall(PhasesBegin());
+  PetscCall(ReadScene(sc));
+  PetscCall(CreateBlocks(sc, b));
+  PetscCall(CheckSceneFiles(sc));
+  if (sc.checkpoint[0] || sc.restart[0]) PetscCall(FileDigest(PETSC_COMM_WORLD, sc.mesh, &sc.problem[MeshDigestKey]));
+  PetscCall(CreateSceneMesh(sc, b, &dm));
+  PetscCall(SetUpBlocks(dm, b));
+  PetscCall(DMCreateGlobalVector(dm, &x));
+  PetscCall(PetscObjectSetName((PetscObject)x, "solution"));
+  PetscCall(CountUnknowns(dm, b, report));
+  PetscCall(CreateSolver(sc, dm, b, &snes));
+  PetscCall(PetscOptionsHasHelp(nullptr, &help));
+  if (help) /* every option of the scene, its blocks and its solver is printed: nothing to solve */
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "-help: the options are listed above; nothing was solved (run without -help to solve; the splits' inner solvers list their options in -ksp_view)\n"));
+  else {
+    PetscCall(CheckUnusedOptions(PETSC_COMM_WORLD, b.Prefixes()));
+    PetscCall(Solve(sc, b, dm, snes, x, report));
+  }
   if (sc.output[0]) PetscCall(ReleaseFile(PETSC_COMM_WORLD, sc.output));
   if (sc.checkpoint[0]) PetscCall(ReleaseFile(PETSC_COMM_WORLD, sc.checkpoint));
-  PetscCall(TimeHistoryDestroy(history));
   PetscCall(VecDestroy(&x));
   PetscCall(SNESDestroy(&snes));
   PetscCall(DMDestroy(&dm));
