@@ -82,8 +82,8 @@ static PetscErrorCode OpenOutput(const Scene &sc, const Blocks &b, DM dm, PetscI
   PetscFunctionReturn(0);
 }
 
-/* The summary lines, the blocks' results and the report. */
-static PetscErrorCode Summarize(const Scene &sc, Blocks &b, DM dm, SNES snes, Vec x, PetscReal tEnd, double seconds, const std::vector<std::string> &splits, RunReport &report)
+/* The summary lines, the blocks' results and the report (report.phases: the time loop's). */
+static PetscErrorCode Summarize(const Scene &sc, Blocks &b, DM dm, SNES snes, Vec x, PetscReal tEnd, RunReport &report)
 {
   PetscInt            newton = 0, krylov = 0;
   SNESConvergedReason reason = report.steps.empty() ? SNES_CONVERGED_ITERATING : report.steps.back().reason;
@@ -97,13 +97,12 @@ static PetscErrorCode Summarize(const Scene &sc, Blocks &b, DM dm, SNES snes, Ve
   for (const Block *blk : b.list)
     if (blk->Summary(&h)) break;
   PetscCall(FieldNorm(dm, x, h.field, NORM_INFINITY, &hmax));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "newton %" PetscInt_FMT " krylov %" PetscInt_FMT " reason %s time %.3f s max %s %.6e\n", newton, krylov, SNESConvergedReasons[reason], seconds, h.name.c_str(), (double)hmax));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "newton %" PetscInt_FMT " krylov %" PetscInt_FMT " reason %s time %.3f s max %s %.6e\n", newton, krylov, SNESConvergedReasons[reason], report.phases.total, h.name.c_str(), (double)hmax));
   PetscCall(CheckFinished(sc, b, snes, report));
   if (h.whole) PetscCall(VecNorm(x, NORM_2, &xnorm));
   else PetscCall(FieldNorm(dm, x, h.field, NORM_2, &xnorm));
   report.results.insert(report.results.end(), {{"max_" + h.name, hmax}, {h.norm, xnorm}});
   for (Block *blk : b.list) PetscCall(blk->Results(dm, x, tEnd, report));
-  PetscCall(PhasesMeasure(PETSC_COMM_WORLD, seconds, splits, report.phases));
   const Phases &p = report.phases;
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "seconds: assembly %.3f preconditioner setup %.3f", p.assembly, p.setup));
   for (const auto &s : p.splitSetUp) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s%s %.3f", &s == &p.splitSetUp.front() ? " (" : ", ", s.first.c_str(), s.second));
@@ -163,7 +162,8 @@ static PetscErrorCode Solve(const Scene &sc, Blocks &b, DM dm, SNES snes, Vec x,
   PetscCall(PetscTime(&t0));
   PetscCall(RunTimeLoop(loop, first, x, report.steps));
   PetscCall(PetscTime(&t1));
-  PetscCall(Summarize(sc, b, dm, snes, x, dynamic ? loop.steps * step : 1.0, t1 - t0, loop.splits, report));
+  PetscCall(PhasesMeasure(PETSC_COMM_WORLD, t1 - t0, loop.splits, report.phases)); /* of the time loop, as its steps' */
+  PetscCall(Summarize(sc, b, dm, snes, x, dynamic ? loop.steps * step : 1.0, report));
   if (sc.output[0]) PetscCall(XdmfClose(series));
   PetscCall(TimeHistoryDestroy(history));
   PetscFunctionReturn(0);
