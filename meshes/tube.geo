@@ -4,11 +4,21 @@
 // nwall the number of element layers through the wall thickness.
 // The seed's geometries: #1 0.15/0.21/2.5, #2 0.08/0.10/5, #3 0.08/0.11/10 (see make-meshes).
 SetFactory("OpenCASCADE");
-DefineConstant[ Ri = 0.15, Ro = 0.21, L = 2.5, h = 0.05, nwall = 2 ];
+// outlets = 2 splits the fluid at y = 0 into two halves, so the outlet is two groups, outlet_a
+// (y > 0) and outlet_b (y < 0): a mesh with two outlets for the outlets' tests.
+DefineConstant[ Ri = 0.15, Ro = 0.21, L = 2.5, h = 0.05, nwall = 2, outlets = 1 ];
 
-Cylinder(1) = {0, 0, 0, 0, 0, L, Ri};
-Cylinder(2) = {0, 0, 0, 0, 0, L, Ro};
-BooleanFragments{ Volume{2}; Delete; }{ Volume{1}; Delete; }
+If (outlets == 2)
+  Cylinder(1) = {0, 0, 0, 0, 0, L, Ri, Pi};
+  Cylinder(3) = {0, 0, 0, 0, 0, L, Ri, Pi};
+  Rotate {{0, 0, 1}, {0, 0, 0}, Pi} { Volume{3}; }
+  Cylinder(2) = {0, 0, 0, 0, 0, L, Ro};
+  BooleanFragments{ Volume{2}; Delete; }{ Volume{1, 3}; Delete; }
+Else
+  Cylinder(1) = {0, 0, 0, 0, 0, L, Ri};
+  Cylinder(2) = {0, 0, 0, 0, 0, L, Ro};
+  BooleanFragments{ Volume{2}; Delete; }{ Volume{1}; Delete; }
+EndIf
 
 // After the fragments: the inner cylinder and the annulus; find their faces by position.
 eps = 1e-6 * L;
@@ -29,6 +39,12 @@ wallOut()   -= outlet();
 interface()  = inner();
 interface() -= inlet();
 interface() -= outlet();
+If (outlets == 2)
+  interface() -= Surface In BoundingBox{-Ri - eps, -eps, -eps, Ri + eps, eps, L + eps}; // between the halves
+  outletA() = Surface In BoundingBox{-Ri - eps, -eps, L - eps, Ri + eps, Ri + eps, L + eps};
+  outletB() = outlet();
+  outletB() -= outletA();
+EndIf
 fluidFaces() = Boundary{ Volume{fluid()}; };
 wallFaces()  = Boundary{ Volume{wall()}; };
 outer()      = wallFaces();
@@ -39,7 +55,12 @@ outer()     -= wallOut();
 Physical Volume("fluid") = fluid();
 Physical Volume("wall") = wall();
 Physical Surface("inlet") = inlet();
-Physical Surface("outlet") = outlet();
+If (outlets == 2)
+  Physical Surface("outlet_a") = outletA();
+  Physical Surface("outlet_b") = outletB();
+Else
+  Physical Surface("outlet") = outlet();
+EndIf
 Physical Surface("interface") = interface();
 Physical Surface("wall_inlet_ring") = wallIn();
 Physical Surface("wall_outlet_ring") = wallOut();

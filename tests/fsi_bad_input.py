@@ -223,7 +223,7 @@ def coupled_bad_input():
              (["-fluid_noslip", "interface"], "-fluid_noslip interface: on the interface interface the fluid moves with the wall"),
              (["-dt", 0], "-dt 0: the coupled problem is dynamic"),
              (["-blocks", "structure,coupling"], "-blocks: the coupling ties structure, fluid and geometry: name all four"),
-             (["-blocks", "structure,wall"], "-blocks: unknown block 'wall' (structure, fluid, geometry, coupling)"),
+             (["-blocks", "structure,wall"], "-blocks: unknown block 'wall' (structure, fluid, geometry, coupling, outlets)"),
              (["-fluid_probes", "5,0,1"], "-fluid_probes: the point (5., 0., 1.) is not in the field's region"),
              (["-options_file", FACSI, "-fieldsplit_fluid_pc_facsi_fluid_multiplier_field", "lambda"],
               "PCFACSIFLUID: the split has no field called lambda (-pc_facsi_fluid_multiplier_field)"),
@@ -265,7 +265,7 @@ def app_help():
     readme = open(os.path.join(MESHES, "..", "docs", "fsi.md")).read()
     table = readme[readme.index("### Options (defaults in brackets; `-help` prints them all)"):readme.index("### How it is built")]
     first = [line.split("|")[1] for line in table.splitlines() if line.startswith("| `")]  # the option column
-    options = sorted({o for cell in first for o in re.findall(r"`(-[a-z_0-9]+)", cell)})
+    options = sorted({o for cell in first for o in re.findall(r"`(-[a-z_0-9<>]+)", cell)})
     missing = [o for o in options if not re.search(r"^\s+" + re.escape(o) + r"[ :]+<", out, re.M)]
     print(len(options), "options documented; missing from -help:", missing)
     assert len(options) >= 35 and not missing, missing
@@ -463,6 +463,30 @@ def inflow_on_coupled_wall():
     # the inlet's flux is negative: the summary says why (it did not)
     assert res["inlet_flux"] < 0 and "(int u.n with the outward normal: an inflow is negative)" in out, out[-1500:]
     shutil.rmtree(tmp)
+
+
+@case
+def outlets_bad():
+    """The outlets' 0D models: R, C, R_d <= 0 or not finite, two conditions on one outlet, an
+    outlet that is also the inlet or a group of the wall, an outlet named twice, a model for a
+    group that is no outlet, models without the outlets block or the block without a model, a
+    backflow coefficient outside [0, 1]: one sentence naming the option, before the first step."""
+    base = [APP, "-mesh", os.path.join(MESHES, "split_tube_L0.msh"), "-blocks", "fluid,outlets", "-fluid_region", "fluid", "-fluid_noslip", "interface",
+            "-fluid_inlet", "inlet", "-fluid_outlet", "outlet_a,outlet_b", "-fluid_inlet_pressure", 100, "-dt", 0.01]
+    for opts, msg in ((["-outlets_outlet_a_resistance", 0], "-outlets_outlet_a_resistance: give R > 0 (and optionally P_d): R,P_d"),
+                      (["-outlets_outlet_a_resistance", "nan"], "-outlets_outlet_a_resistance: value must be a finite number (got nan)"),
+                      (["-outlets_outlet_b_rcr", "100,0,10"], "-outlets_outlet_b_rcr: give R_p >= 0, C > 0 and R_d > 0"),
+                      (["-outlets_outlet_b_rcr", "100,1e-4,-10"], "-outlets_outlet_b_rcr: give R_p >= 0, C > 0 and R_d > 0"),
+                      (["-outlets_outlet_a_rcr", "100,1e-4,10", "-outlets_outlet_a_resistance", 5], "-outlets_outlet_a_resistance and -outlets_outlet_a_rcr: one condition per outlet"),
+                      (["-fluid_outlet", "inlet", "-outlets_inlet_resistance", 10], "-fluid_outlet inlet: the outlet with a 0D model is also the inlet (-fluid_inlet)"),
+                      (["-fluid_outlet", "wall_outlet_ring", "-outlets_wall_outlet_ring_resistance", 10], "-fluid_outlet wall_outlet_ring: no face of the group bounds a cell of -fluid_region fluid"),
+                      (["-fluid_outlet", "outlet_a,outlet_a", "-outlets_outlet_a_resistance", 10], "-fluid_outlet outlet_a,outlet_a: the group outlet_a is named twice"),
+                      (["-outlets_outlet_a_resistance", 10, "-outlets_outlet_c_resistance", 10], "-outlets_outlet_c_resistance: no such option"),
+                      (["-blocks", "fluid", "-outlets_outlet_a_resistance", 10], "-outlets_outlet_a_resistance: the 0D outlet models are the outlets block's; add outlets to -blocks"),
+                      ([], "-blocks ...,outlets: no outlet of -fluid_outlet outlet_a,outlet_b has a model"),
+                      (["-blocks", "outlets", "-outlets_outlet_a_resistance", 10], "-blocks: the outlets block models the vessels beyond the fluid's outlets; name fluid too"),
+                      (["-outlets_outlet_a_resistance", 10, "-fluid_backflow_stabilization", 1.5], "-fluid_backflow_stabilization: value must be in [0, 1] (got 1.5)")):
+        refused(base + opts, msg, np=2)
 
 
 @case

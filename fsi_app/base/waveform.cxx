@@ -65,6 +65,25 @@ PetscReal Waveform::Value(PetscReal time) const
   return m[i] * l * l * l / (6 * h) + m[i + 1] * r * r * r / (6 * h) + (v[i] / h - m[i] * h / 6) * l + (v[i + 1] / h - m[i + 1] * h / 6) * r;
 }
 
+std::vector<PetscReal> Waveform::Harmonics(PetscInt K) const
+{
+  std::vector<PetscReal> c(2 * K + 1, 0.0);
+  if (t.empty()) {
+    for (size_t k = 0; k < fourier.size() && k < c.size(); k++) c[k] = fourier[k];
+    return c;
+  }
+  const PetscInt N = 64 * PetscMax(K, 1);
+  for (PetscInt j = 0; j < N; j++) {
+    const PetscReal tj = period * j / N, vj = Value(tj) / N;
+    c[0] += vj;
+    for (PetscInt k = 1; k <= K; k++) {
+      const PetscReal phase = 2 * PETSC_PI * k * j / N;
+      c[2 * k - 1] += 2 * vj * PetscCosReal(phase), c[2 * k] += 2 * vj * PetscSinReal(phase);
+    }
+  }
+  return c;
+}
+
 /* "" if the samples of `file` make a waveform (then in w.t, w.v), else why not. */
 static std::string ReadSamples(const char *option, const std::string &file, Waveform &w)
 {

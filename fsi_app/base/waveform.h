@@ -18,6 +18,10 @@ struct Waveform {
   std::vector<PetscReal> fourier; /* a_0, a_1, b_1, a_2, b_2, ... */
 
   PetscReal Value(PetscReal time) const;
+  /* a_0, a_1, b_1, ..., a_K, b_K: the series itself, or the samples' spline's coefficients by
+     the trapezoidal rule on 64 K points (exact for its trigonometric part up to K; the spline's
+     coefficients fall as k^-4, so the aliasing error is of the order of the K-th's) */
+  std::vector<PetscReal> Harmonics(PetscInt K) const;
 };
 
 /* The samples of `file` (lines "t value", '#' starts a comment), read on rank 0: at least four,

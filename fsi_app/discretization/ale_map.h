@@ -5,6 +5,7 @@
    grad_x N = F^-T grad_X N. The moved cell is a curved (isoparametric P2) tetrahedron. */
 #pragma once
 
+#include "discretization/cells.h"
 #include "discretization/p2tet.h"
 
 namespace fsi {
@@ -31,5 +32,29 @@ PetscReal MovePoint(const CellGeometry &g, const PetscReal *de, const PetscReal 
    (if asked) and its weight w_q |dX/dl| (affine for a straight cell, through the bend for a
    curved one, whose J > 0 FieldCellsCreate checked). */
 PetscReal ReferenceGradients(const CellGeometry &g, const P2Rule &rule, PetscInt q, PetscReal dN[10][3], PetscReal X[3] = nullptr);
+
+/* Each point of `rule` on face f of cell g moved by de (nullptr: fixed): body(N, x, n, w) with
+   the basis values, the moved point, the outward unit normal and the area weight; n da =
+   J F^-T N dA (Nanson). The face's integrals of the fluid's tractions and fluxes. */
+template <class Body>
+void ForEachFacePoint(const CellGeometry &g, const FaceRule &rule, const CellFace &f, const PetscReal *de, Body body)
+{
+  PetscReal e1[3], e2[3], N0[3];
+  for (int d = 0; d < 3; d++) e1[d] = g.x[f.slot[1]][d] - g.x[f.slot[0]][d], e2[d] = g.x[f.slot[2]][d] - g.x[f.slot[0]][d];
+  N0[0] = e1[1] * e2[2] - e1[2] * e2[1], N0[1] = e1[2] * e2[0] - e1[0] * e2[2], N0[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  const PetscReal area2 = PetscSqrtReal(N0[0] * N0[0] + N0[1] * N0[1] + N0[2] * N0[2]); /* twice the reference face's area */
+  for (int d = 0; d < 3; d++) N0[d] *= f.sign / area2;
+  for (PetscInt q = 0; q < rule.nq; q++) {
+    PetscReal  l[4] = {0, 0, 0, 0}, N[10], n[3];
+    MovedPoint m;
+    for (int a = 0; a < 3; a++) l[f.slot[a]] = rule.mu[3 * q + a];
+    P2Values(l, N);
+    MovePoint(g, de, l, N, m);
+    for (int j = 0; j < 3; j++) n[j] = m.J * (m.Finv[0][j] * N0[0] + m.Finv[1][j] * N0[1] + m.Finv[2][j] * N0[2]);
+    const PetscReal ratio = PetscSqrtReal(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]); /* da / dA */
+    for (int d = 0; d < 3; d++) n[d] /= ratio;
+    body(N, m.x, n, rule.w[q] * area2 * ratio);
+  }
+}
 
 } // namespace fsi

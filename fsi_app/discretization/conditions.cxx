@@ -125,9 +125,10 @@ PetscErrorCode CreateSection(DM dm, const Conditions &list)
     PetscCall(PetscFEGetNumComponents((PetscFE)disc, &nc[f]));
     PetscCall(PetscFEGetBasisSpace((PetscFE)disc, &space));
     PetscCall(PetscSpaceGetDegree(space, &degree, nullptr));
-    PetscCheck(degree == 1 || degree == 2, PetscObjectComm((PetscObject)dm), PETSC_ERR_SUP, "field %" PetscInt_FMT ": Lagrange degree %" PetscInt_FMT " (the element loops are P1 and P2)", f, degree);
-    numDof[f * (dim + 1) + 0] = nc[f];                     /* vertices */
-    numDof[f * (dim + 1) + 1] = degree == 2 ? nc[f] : 0;   /* edges */
+    PetscCheck(degree >= 0 && degree <= 2, PetscObjectComm((PetscObject)dm), PETSC_ERR_SUP, "field %" PetscInt_FMT ": Lagrange degree %" PetscInt_FMT " (the element loops are P1 and P2; degree 0: scalars on a cell)", f, degree);
+    numDof[f * (dim + 1) + 0]   = degree > 0 ? nc[f] : 0;  /* vertices */
+    numDof[f * (dim + 1) + 1]   = degree == 2 ? nc[f] : 0; /* edges */
+    numDof[f * (dim + 1) + dim] = degree == 0 ? nc[f] : 0; /* cells: the unknowns of a 0D model */
   }
   std::vector<std::vector<PetscInt>>        points(list.size()); /* each condition's points, found once */
   std::vector<std::map<PetscInt, unsigned>> mask(nf);

@@ -46,7 +46,7 @@ PetscErrorCode ConditionPoints(DM dm, const Condition &c, std::vector<PetscInt> 
 PetscErrorCode ConstrainedComponents(DM dm, const Conditions &list, PetscInt field, PetscInt nc, std::map<PetscInt, unsigned> &mask);
 
 /* The local section of dm's fields (Lagrange P1 or P2 on their regions, as DMSetField() gave
-   them) with the list's constraints; dm keeps the list for InsertEssentialValues(). Call once,
+   them; degree 0: a few scalars on each cell of the region, a 0D model's unknowns) with the list's constraints; dm keeps the list for InsertEssentialValues(). Call once,
    after every field and condition, before any vector or matrix is made. */
 PetscErrorCode CreateSection(DM dm, const Conditions &list);
 

@@ -49,29 +49,11 @@ static void Evaluate(const CellState &s, const PetscReal N[10], const PetscReal 
   }
 }
 
-/* The traction groups: at face point q of the face in the current configuration (de: the
-   cell's mesh displacement, or nullptr), the basis values, the point, the outward unit normal
-   and the area weight; n da = J F^-T N dA (Nanson). */
+/* The traction and flux faces' points (discretization/ale_map.h). */
 template <class Body>
 static void ForEachFacePoint(const FluidForms &fb, const CellFace &f, const PetscReal *de, Body body)
 {
-  const CellGeometry &g = fb.velocity.geom[f.k];
-  PetscReal           e1[3], e2[3], N0[3];
-  for (int d = 0; d < 3; d++) e1[d] = g.x[f.slot[1]][d] - g.x[f.slot[0]][d], e2[d] = g.x[f.slot[2]][d] - g.x[f.slot[0]][d];
-  N0[0] = e1[1] * e2[2] - e1[2] * e2[1], N0[1] = e1[2] * e2[0] - e1[0] * e2[2], N0[2] = e1[0] * e2[1] - e1[1] * e2[0];
-  const PetscReal area2 = PetscSqrtReal(N0[0] * N0[0] + N0[1] * N0[1] + N0[2] * N0[2]); /* twice the reference face's area */
-  for (int d = 0; d < 3; d++) N0[d] *= f.sign / area2;
-  for (PetscInt q = 0; q < fb.faceRule.nq; q++) {
-    PetscReal  l[4] = {0, 0, 0, 0}, N[10], n[3];
-    MovedPoint m;
-    for (int a = 0; a < 3; a++) l[f.slot[a]] = fb.faceRule.mu[3 * q + a];
-    P2Values(l, N);
-    MovePoint(g, de, l, N, m);
-    for (int j = 0; j < 3; j++) n[j] = m.J * (m.Finv[0][j] * N0[0] + m.Finv[1][j] * N0[1] + m.Finv[2][j] * N0[2]);
-    const PetscReal ratio = PetscSqrtReal(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]); /* da / dA */
-    for (int d = 0; d < 3; d++) n[d] /= ratio;
-    body(N, m.x, n, fb.faceRule.w[q] * area2 * ratio);
-  }
+  ForEachFacePoint(fb.velocity.geom[f.k], fb.faceRule, f, de, body);
 }
 
 static PetscErrorCode ReportInverted(const FluidForms &fb, PetscInt inverted)
@@ -124,6 +106,27 @@ static void FaceResidual(const FluidForms &fb, const TractionGroup &tg, const Ce
   });
 }
 
+/* The backflow term on one outlet face: its residual (ru) and, if K is given, its derivative
+   in the cell's 30 velocity dofs (K, 30 x 30). */
+static void BackflowFace(const FluidForms &fb, const CellFace &face, const PetscReal ue[30], const PetscReal *de, PetscReal ru[30], PetscReal *K)
+{
+  const PetscReal c = fb.backflowBeta * fb.rho;
+  ForEachFacePoint(fb, face, de, [&](const PetscReal N[10], const PetscReal *, const PetscReal n[3], PetscReal w) {
+    PetscReal u[3] = {0, 0, 0};
+    for (int a = 0; a < 10; a++)
+      for (int i = 0; i < 3; i++) u[i] += N[a] * ue[3 * a + i];
+    const PetscReal un = u[0] * n[0] + u[1] * n[1] + u[2] * n[2];
+    if (un >= 0) return;
+    for (int a = 0; a < 10; a++)
+      for (int i = 0; i < 3; i++) {
+        ru[3 * a + i] -= w * c * un * u[i] * N[a];
+        if (K)
+          for (int b = 0; b < 10; b++)
+            for (int k = 0; k < 3; k++) K[(3 * a + i) * 30 + 3 * b + k] -= w * c * N[a] * N[b] * (n[k] * u[i] + (i == k ? un : 0));
+      }
+  });
+}
+
 PetscErrorCode FluidResidual(FluidForms &fb, const PetscScalar *x, PetscScalar *f)
 {
   std::vector<const PetscScalar *> past;
@@ -144,6 +147,14 @@ PetscErrorCode FluidResidual(FluidForms &fb, const PetscScalar *x, PetscScalar *
       PetscReal ru[30] = {0}, de[30];
       if (fb.mesh) Gather(*fb.mesh, face.k, x, de);
       FaceResidual(fb, tg, face, fb.mesh ? de : nullptr, ru);
+      Scatter(fb.velocity, face.k, ru, f);
+    }
+  if (fb.backflowBeta > 0)
+    for (const CellFace &face : fb.backflow) {
+      PetscReal ru[30] = {0}, ue[30], de[30];
+      Gather(fb.velocity, face.k, x, ue);
+      if (fb.mesh) Gather(*fb.mesh, face.k, x, de);
+      BackflowFace(fb, face, ue, fb.mesh ? de : nullptr, ru, nullptr);
       Scatter(fb.velocity, face.k, ru, f);
     }
   PetscCall(TimeHistoryRestorePast(fb.history, past));
@@ -304,6 +315,14 @@ PetscErrorCode FluidJacobian(const FluidForms &fb, const PetscScalar *x, Mat P)
       PetscCall(MatSetValues(P, n, idx, 30, &fb.mesh->global[30 * k], S, ADD_VALUES));
     }
   }
+  if (fb.backflowBeta > 0)
+    for (const CellFace &face : fb.backflow) {
+      PetscReal ru[30] = {0}, ue[30], de[30], K[30 * 30] = {0};
+      Gather(fb.velocity, face.k, x, ue);
+      if (fb.mesh) Gather(*fb.mesh, face.k, x, de);
+      BackflowFace(fb, face, ue, fb.mesh ? de : nullptr, ru, K);
+      PetscCall(MatSetValues(P, 30, &fb.velocity.global[30 * face.k], 30, &fb.velocity.global[30 * face.k], K, ADD_VALUES));
+    }
   PetscCall(TimeHistoryRestorePast(fb.history, past));
   PetscFunctionReturn(0);
 }

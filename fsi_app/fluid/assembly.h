@@ -4,11 +4,16 @@
    moved by the P2 mesh displacement d_f (or on the fixed mesh):
      R_u(v) = int_{Omega_t} rho (d_t u + ((u - w) . grad) u) . v + 2 mu eps(u) : eps(v) - p div v - f . v
               - int_{faces_t} t . v
+              - beta rho int_{outlets_t} (u . n)_- u . v
      R_p(q) = - int_{Omega_t} q div u
    with d_t u the fully implicit difference (core/time_history.h) of the nodal values, which
    move with the mesh (the time derivative at fixed X), w the same difference of d_f (the mesh
    velocity), t a prescribed traction on groups of faces (natural: stress-free) and f a body
-   force (manufactured solutions). The Jacobian is exact in (u, p), convection included, and
+   force (manufactured solutions). (u . n)_- = min(u . n, 0) is the backflow through an outlet
+   (Esmaily Moghadam et al. 2011): the term takes out the kinetic energy that fluid re-entering
+   through a traction condition brings in (all of it for beta >= 1/2; svMultiPhysics' default
+   0.2 suffices in practice) and is zero while the flow leaves; its derivative in d_f is left
+   out (the outlets' planes do not move). The Jacobian is exact in (u, p), convection included, and
    holds the shape derivatives (in d_f: the moved geometry, the mesh velocity, the moved
    traction faces) if asked: in closed form for the volume terms, by forward differences of
    the face residual for the traction faces and of the body force in x; without them
@@ -40,6 +45,8 @@ struct FluidForms {
   P2Rule                     rule;               /* degree 5: the convective term exactly on a fixed mesh */
   FaceRule                   faceRule;
   std::vector<TractionGroup> tractions;
+  std::vector<CellFace>      backflow;         /* the outlets' faces, where backflow is damped */
+  PetscReal                  backflowBeta = 0; /* beta of the backflow term */
   BodyForce                  force;
   PetscReal                  time    = 0; /* of the step being solved: tractions, body force */
   const TimeHistory         *history = nullptr;

@@ -5,6 +5,7 @@
 #include "mesh/mesh.h"
 #include "base/options.h"
 #include "verification/errors.h"
+#include <algorithm>
 #include <string>
 
 namespace fsi {
@@ -15,17 +16,23 @@ const char *const PulseShapeNames[] = {"step", "cosine", "PulseShape", "PULSE_",
    traction fixes the pressure's constant. */
 static PetscErrorCode MMSDirichletFaces(const FluidOptions &o, DM dm, DMLabel *faces)
 {
-  DMLabel boundary, outlet;
+  DMLabel              boundary;
+  std::vector<DMLabel> outlets;
 
   PetscFunctionBegin;
   PetscCall(DMGetLabel(dm, "boundary", &boundary));
-  PetscCall(DMGetLabel(dm, o.outlet, &outlet));
+  for (const auto &g : SplitList(o.outlet)) {
+    DMLabel l;
+    PetscCall(DMGetLabel(dm, g.c_str(), &l));
+    outlets.push_back(l);
+  }
   PetscCall(DMCreateLabel(dm, "mms_dirichlet"));
   PetscCall(DMGetLabel(dm, "mms_dirichlet", faces));
   PetscCall(ForEachLabelPoint(boundary, {1}, [&](PetscInt face) -> PetscErrorCode {
-    PetscInt v;
+    PetscInt v = -1;
     PetscFunctionBegin;
-    PetscCall(DMLabelGetValue(outlet, face, &v));
+    for (DMLabel l : outlets)
+      if (v < 0) PetscCall(DMLabelGetValue(l, face, &v));
     if (v < 0) PetscCall(DMLabelSetValue(*faces, face, 1));
     PetscFunctionReturn(0);
   }));
@@ -65,11 +72,17 @@ PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &probl
   PetscCall(r.Enum("-fluid_inlet_pressure_shape", "the inlet pressure over time: step (on at once) or cosine (p (1 - cos(2 pi t / T)) / 2 over [0, T], T = -fluid_inlet_pressure_until)", PulseShapeNames, &o.pulseShape, PROBLEM));
   PetscCall(r.String("-fluid_inlet_pressure_waveform", "the inlet pressure p(t) from a file of samples 't p' (s, dyn/cm^2) over one period, the last repeating the first; repeated periodically, a periodic cubic spline between samples; traction -p n on -fluid_inlet (named in an options file: relative to that file)", o.pressureWaveform, sizeof(o.pressureWaveform), PROBLEM));
   PetscCall(r.Numbers("-fluid_inlet_pressure_fourier", "the inlet pressure p(t) = a0 + sum_k a_k cos(2 pi k t/T) + b_k sin(2 pi k t/T) as T,a0,a1,b1,a2,b2,... (s, dyn/cm^2); traction -p n on -fluid_inlet", o.pressureFourier, 41, "numbers separated by commas; T, then at most 20 harmonics", PROBLEM));
+  PetscCall(r.String("-fluid_inflow_waveform", "the inflow rate Q(t) from a file of samples 't Q' (s, cm^3/s into the fluid) over one period, the last repeating the first; a periodic cubic spline between samples; imposed as a velocity profile on -fluid_inlet (named in an options file: relative to that file)", o.flowWaveform, sizeof(o.flowWaveform), PROBLEM));
+  PetscCall(r.Numbers("-fluid_inflow_fourier", "the inflow rate Q(t) = a0 + sum_k a_k cos(2 pi k t/T) + b_k sin(2 pi k t/T) as T,a0,a1,b1,... (s, cm^3/s into the fluid)", o.flowFourier, 41, "numbers separated by commas; T, then at most 20 harmonics", PROBLEM));
+  PetscCall(r.Enum("-fluid_inflow_profile", "the inflow rate's velocity profile: plug (uniform), parabolic (-Delta phi = 1 on the inlet, 0 on its rim: any inlet shape), womersley (circular inlets: Womersley's solution for each harmonic of Q)", InflowProfileNames, &o.profile, PROBLEM));
+  PetscCall(r.Real("-fluid_inflow_ramp", "the inflow rate rises as sin^2(pi t / 2T) over this time T (s); 0: at once", &o.flowRamp, NonNegative, PROBLEM));
+  PetscCall(r.Bool("-womersley", "verification: the velocity's L2 error against Womersley's flow for the inflow rate, every step (a rigid straight tube along the inlet's normal, -fluid_inflow_profile womersley)", &o.womersley, PROBLEM));
   PetscCall(r.Reals("-fluid_inflow_velocity", "prescribed velocity ux,uy,uz on the faces of -fluid_inlet (cm/s; no-slip groups keep u = 0 on their nodes; on a coupled wall the rim moves with the wall)", o.inflowVelocity, &n, &o.inflow, Any, PROBLEM));
   PetscCheck(!o.inflow || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_inflow_velocity: give ux,uy,uz (got %" PetscInt_FMT " values)", n);
   PetscCall(r.Points("-fluid_probes", "points x1,y1,z1,x2,... (at most 20, reference configuration) where the pressure is recorded every step (in the run report); with -fluid_inlet_pressure, when the pulse's front (half its pressure) passes each and the wave speed", o.probes));
   PetscCall(r.String("-fluid_inlet", "group of the inflow faces", o.inlet, sizeof(o.inlet), PROBLEM));
-  PetscCall(r.String("-fluid_outlet", "group of the outflow faces (stress-free)", o.outlet, sizeof(o.outlet), PROBLEM));
+  PetscCall(r.String("-fluid_outlet", "groups of the outflow faces, comma separated, each an outlet: traction-free, or a 0D model of the outlets block", o.outlet, sizeof(o.outlet), PROBLEM));
+  PetscCall(r.Real("-fluid_backflow_stabilization", "beta of the backflow term -beta rho (u.n)_- u.v on the outlets (Esmaily Moghadam et al. 2011): damps fluid re-entering through them; 0 turns it off", &o.backflow, {0, 1}, PROBLEM));
   PetscCall(r.Bool("-fluid_shape_derivatives", "on a moving mesh, the fluid's Jacobian holds its derivative in the mesh displacement (exact Newton); false: quasi-Newton", &o.shapeDerivatives, RUN));
   n = 3;
   PetscBool set;
@@ -78,6 +91,9 @@ PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &probl
   PetscCall(r.Enum("-mms_flow", "-mms: the manufactured flow (exact velocity on the boundary but -fluid_outlet, exact traction there)", FlowMMSKindNames, &o.mmsFlow, PROBLEM));
   PetscCall(r.Real("-mms_ramp", "-mms: the trigonometric manufactured flow rises as sin^2(pi t / 2T) over this time T (s); 0: steady", &o.mmsRamp, NonNegative, PROBLEM));
   PetscOptionsEnd();
+  const std::vector<std::string> outlets = SplitList(o.outlet);
+  for (size_t k = 0; k < outlets.size(); k++)
+    PetscCheck(std::count(outlets.begin(), outlets.end(), outlets[k]) == 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_outlet %s: the group %s is named twice; each outlet is named once", o.outlet, outlets[k].c_str());
   PetscCheck(o.pulseShape == PULSE_STEP || o.pulseEnd > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_inlet_pressure_shape cosine needs the hump's length: -fluid_inlet_pressure_until T with T > 0");
   PetscCheck(!o.inflow || (o.inletPressure == 0 && !sc.mms && o.poiseuille[0] == 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_inflow_velocity: the inlet cannot also take -fluid_inlet_pressure, -mms or -poiseuille (one condition per face)");
   const char *wave = o.pressureWaveform[0] ? "-fluid_inlet_pressure_waveform" : !o.pressureFourier.empty() ? "-fluid_inlet_pressure_fourier" : nullptr;
@@ -88,6 +104,16 @@ PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &probl
     if (o.pressureWaveform[0]) PetscCall(WaveformRead(PETSC_COMM_WORLD, wave, o.pressureWaveform, inletPressure));
     else PetscCall(WaveformFourier(wave, o.pressureFourier.data(), (PetscInt)o.pressureFourier.size(), inletPressure));
   }
+  const char *flow = o.flowWaveform[0] ? "-fluid_inflow_waveform" : !o.flowFourier.empty() ? "-fluid_inflow_fourier" : nullptr;
+  if (flow) {
+    PetscCheck(!(o.flowWaveform[0] && !o.flowFourier.empty()) && !wave && o.inletPressure == 0 && !o.inflow && !sc.mms && o.poiseuille[0] == 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP,
+               "%s: the inlet cannot also take -fluid_inflow_waveform or _fourier, an inlet pressure, -fluid_inflow_velocity, -mms or -poiseuille (one condition per face)", flow);
+    PetscCheck(sc.Dynamic(), PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "%s: the inflow rate is a function of time: give a time step (-dt)", flow);
+    if (o.flowWaveform[0]) PetscCall(WaveformRead(PETSC_COMM_WORLD, flow, o.flowWaveform, inflow.flow));
+    else PetscCall(WaveformFourier(flow, o.flowFourier.data(), (PetscInt)o.flowFourier.size(), inflow.flow));
+    inflow.kind = o.profile, inflow.ramp = o.flowRamp, inflow.rho = o.rho, inflow.mu = o.mu;
+  }
+  PetscCheck(!o.womersley || (flow && o.profile == INFLOW_WOMERSLEY && !mesh), PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-womersley: Womersley's flow is the exact solution in a rigid tube (-blocks fluid) driven by -fluid_inflow_waveform or _fourier with -fluid_inflow_profile womersley");
   PetscFunctionReturn(0);
 }
 
@@ -103,11 +129,12 @@ void FluidBlock::Groups(std::vector<GroupUse> &groups) const
   const char *conditions = "fluid's inlet, outlet and no-slip faces";
   groups.push_back({opt.region, "-fluid_region", 3, RegionsRole});
   for (const auto &g : SplitList(opt.noslip)) groups.push_back({g.substr(0, g.find(':')), "-fluid_noslip", 2, conditions});
-  const bool inletNeeded = opt.inletPressure != 0 || opt.poiseuille[0] > 0 || opt.inflow || inletPressure.period > 0;
+  const bool inletNeeded = opt.inletPressure != 0 || opt.poiseuille[0] > 0 || opt.inflow || inletPressure.period > 0 || inflow.flow.period > 0;
   if (inletNeeded) groups.push_back({opt.inlet, "-fluid_inlet", 2, conditions});
   /* the outlet's conditions need it; a stress-free outlet under a pressure or inflow only has its flux reported */
   const bool outletNeeded = opt.poiseuille[0] > 0 || sc.mms;
-  if (outletNeeded || inletNeeded) groups.push_back({opt.outlet, "-fluid_outlet", 2, conditions, !outletNeeded});
+  if (outletNeeded || inletNeeded)
+    for (const auto &g : SplitList(opt.outlet)) groups.push_back({g, "-fluid_outlet", 2, conditions, !outletNeeded});
 }
 
 PetscErrorCode FluidBlock::AddFields(DM dm)
@@ -127,6 +154,15 @@ PetscErrorCode FluidBlock::AddConditions(DM dm, Conditions &list)
     PetscCall(AddDirichlet(dm, list, opt.inlet, velocity, "-fluid_inlet", opt.inflowVelocity));
     if (coupled) PetscCall(DMGetLabel(dm, mesh->Group("interface").c_str(), &list.back().except));
   }
+  if (inflow.flow.period > 0) { /* the profile is set up with the cells (SetUp); its values are read after */
+    Condition            c;
+    const InflowProfile *p = &inflow;
+    PetscCall(DMGetLabel(dm, opt.inlet, &c.label));
+    c.name = std::string("-fluid_inflow_profile ") + InflowProfileNames[opt.profile] + " on " + opt.inlet, c.field = velocity;
+    c.value = [p](const PetscReal x[3], PetscReal t, PetscScalar *v) { p->Velocity(x, t, v); };
+    if (coupled) PetscCall(DMGetLabel(dm, mesh->Group("interface").c_str(), &c.except));
+    list.push_back(c);
+  }
   PetscCall(AddDirichlet(dm, list, opt.noslip, velocity, "-fluid_noslip"));
   if (sc.mms) {
     Condition      c;
@@ -137,6 +173,22 @@ PetscErrorCode FluidBlock::AddConditions(DM dm, Conditions &list)
     list.push_back(c);
   }
   PetscFunctionReturn(0);
+}
+
+/* Womersley's velocity u = W(r, t) n and its gradient W_r n (x) e_r about the inlet's axis. */
+static void WomersleyExact(const PetscReal x[3], PetscReal t, const void *ctx, PetscReal u[3], PetscReal G[9])
+{
+  const auto     *b = (const std::pair<const Womersley *, const InflowProfile *> *)ctx;
+  const PetscReal *c = b->second->centre, *n = b->second->normal;
+  PetscReal        y[3], along = 0, r2 = 0;
+  for (int d = 0; d < 3; d++) y[d] = x[d] - c[d], along += y[d] * n[d];
+  for (int d = 0; d < 3; d++) y[d] -= along * n[d], r2 += y[d] * y[d];
+  const PetscReal r = PetscSqrtReal(r2), w = b->first->Velocity(r, t), wr = r > 0 ? b->first->RadialDerivative(r, t) / r : 0.0;
+  for (int i = 0; i < 3; i++) {
+    u[i] = w * n[i];
+    if (G)
+      for (int j = 0; j < 3; j++) G[3 * i + j] = wr * n[i] * y[j];
+  }
 }
 
 PetscErrorCode FluidBlock::SetUp(DM dm)
@@ -162,20 +214,47 @@ PetscErrorCode FluidBlock::SetUp(DM dm)
     fb.tractions.push_back(tg);
     PetscFunctionReturn(0);
   };
-  for (auto g : {std::make_pair(opt.inlet, &inletFaces), std::make_pair(opt.outlet, &outletFaces)}) { /* the fluxes a run reports */
+  auto faces = [&](const std::string &group, std::vector<CellFace> &f) -> PetscErrorCode { /* the fluxes a run reports */
     DMLabel label;
-    PetscCall(DMGetLabel(dm, g.first, &label));
-    if (label) PetscCall(CellFacesCreate(dm, fb.velocity, label, *g.second));
+    PetscFunctionBegin;
+    PetscCall(DMGetLabel(dm, group.c_str(), &label));
+    if (label) PetscCall(CellFacesCreate(dm, fb.velocity, label, f));
+    PetscFunctionReturn(0);
+  };
+  PetscCall(faces(opt.inlet, inletFaces));
+  const std::vector<std::string> outlets = SplitList(opt.outlet);
+  outletsFaces.assign(outlets.size() > 1 ? outlets.size() : 0, {});
+  for (size_t k = 0; k < outlets.size(); k++) {
+    std::vector<CellFace> f;
+    PetscCall(faces(outlets[k], f));
+    outletFaces.insert(outletFaces.end(), f.begin(), f.end());
+    if (outlets.size() > 1) outletsFaces[k] = f;
   }
+  fb.backflow = outletFaces, fb.backflowBeta = sc.mms || opt.poiseuille[0] > 0 || opt.womersley ? 0.0 : opt.backflow; /* the exact flows' traction holds there */
   if (coupled) PetscCall(balance.SetUp(dm, fb, mesh->Group("interface").c_str()));
+  if (inflow.flow.period > 0) PetscCall(InflowProfileSetUp(dm, fb.velocity, opt.inlet, inflow));
+  if (opt.womersley) exact.SetUp(inflow.flow.Harmonics((PetscInt)inflow.womersley.c.size() - 1), inflow.flow.period, inflow.radius, opt.rho, opt.mu);
   if (!opt.probes.empty()) PetscCall(ProbesCreate(PetscObjectComm((PetscObject)dm), fb.pressure, opt.probes, "-fluid_probes", probes));
   if (sc.mms) {
     const FlowMMS *m = &flow;
-    PetscCall(addTraction(opt.outlet, [m](const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal tr[3]) { FlowMMSTraction(*m, x, n, t, tr); }));
+    for (const auto &g : outlets) PetscCall(addTraction(g.c_str(), [m](const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal tr[3]) { FlowMMSTraction(*m, x, n, t, tr); }));
     fb.force = [m](const PetscReal x[3], PetscReal t, PetscReal f[3]) { FlowMMSForce(*m, x, t, f); };
   } else if (opt.poiseuille[0] > 0) { /* the exact flow's traction sigma n at both ends */
     const Poiseuille p = {opt.poiseuille[0], opt.poiseuille[1], opt.poiseuille[2], opt.mu};
-    for (const char *g : {opt.inlet, opt.outlet}) PetscCall(addTraction(g, [p](const PetscReal x[3], const PetscReal n[3], PetscReal, PetscReal t[3]) { PoiseuilleTraction(p, x, n, t); }));
+    std::vector<std::string> ends = outlets;
+    ends.push_back(opt.inlet);
+    for (const auto &g : ends) PetscCall(addTraction(g.c_str(), [p](const PetscReal x[3], const PetscReal n[3], PetscReal, PetscReal t[3]) { PoiseuilleTraction(p, x, n, t); }));
+  } else if (opt.womersley) { /* the exact flow's traction mu (grad u + grad u^T) n on the outlets: its pressure is 0 there */
+    const Womersley     *w = &exact;
+    const InflowProfile *in = &inflow;
+    const PetscReal      mu = opt.mu;
+    for (const auto &g : outlets)
+      PetscCall(addTraction(g.c_str(), [w, in, mu](const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal tr[3]) {
+        const std::pair<const Womersley *, const InflowProfile *> ctx(w, in);
+        PetscReal u[3], G[9];
+        WomersleyExact(x, t, &ctx, u, G);
+        for (int i = 0; i < 3; i++) tr[i] = mu * ((G[3 * i] + G[i]) * n[0] + (G[3 * i + 1] + G[3 + i]) * n[1] + (G[3 * i + 2] + G[6 + i]) * n[2]);
+      }));
   } else if (inletPressure.period > 0) {
     const Waveform *w = &inletPressure;
     PetscCall(addTraction(opt.inlet, [w](const PetscReal *, const PetscReal n[3], PetscReal time, PetscReal t[3]) {
@@ -232,6 +311,13 @@ std::string FluidBlock::InvertedCause() const
 PetscErrorCode FluidBlock::AfterStep(DM dm, PetscInt, PetscReal t, Vec x)
 {
   PetscFunctionBegin;
+  if (opt.womersley) {
+    const std::pair<const Womersley *, const InflowProfile *> ctx(&exact, &inflow);
+    Errors e, n;
+    PetscCall(ComputeErrors(dm, forms.velocity, x, t, WomersleyExact, &ctx, e));
+    PetscCall(ComputeErrors(dm, forms.velocity, x, t, ZeroSolution, nullptr, n));
+    womersleyErrors.insert(womersleyErrors.end(), {t, e.l2, n.l2});
+  }
   if (!probes.cell.empty()) PetscCall(ProbesRecordGlobal(dm, forms.pressure, x, t, probes));
   if (coupled) PetscCall(balance.Record(dm, forms, inletFaces, outletFaces, t, x));
   PetscFunctionReturn(0);
@@ -274,6 +360,13 @@ PetscErrorCode FluidBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
   PetscCall(FluidFlux(dm, forms, outletFaces, x, &out));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "flux inlet %.6e outlet %.6e (int u.n with the outward normal: an inflow is negative)\n", (double)in, (double)out));
   report.results.insert(report.results.end(), {{"inlet_flux", in}, {"outlet_flux", out}});
+  const std::vector<std::string> outlets = SplitList(opt.outlet);
+  for (size_t k = 0; k < outletsFaces.size(); k++) {
+    PetscReal q;
+    PetscCall(FluidFlux(dm, forms, outletsFaces[k], x, &q));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "flux outlet %s %.6e\n", outlets[k].c_str(), (double)q));
+    report.results.push_back({"outlet_flux_" + outlets[k], q});
+  }
   PetscCall(ComputeErrors(dm, forms.velocity, x, t, ZeroSolution, nullptr, e, forms.mesh)); /* the L2 norms: the error against zero */
   PetscCall(ComputeErrors(dm, forms.pressure, x, t, ZeroSolution, nullptr, ep, forms.mesh));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "L2 norms on the moved fluid: velocity %.6e pressure %.6e\n", (double)e.l2, (double)ep.l2));
@@ -289,6 +382,13 @@ PetscErrorCode FluidBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "flux %.6e exact %.6e relative error %.3e\n", (double)Q, (double)exact, (double)PetscAbsReal(Q / exact - 1)));
     report.results.insert(report.results.end(), {{"flux", Q}, {"flux_relative_error", PetscAbsReal(Q / exact - 1)}});
     PetscCall(ReportErrors("", e, report));
+  }
+  if (opt.womersley && !womersleyErrors.empty()) { /* over the last period: the largest error against the largest norm */
+    PetscReal e = 0, n = 0;
+    for (size_t k = 0; k < womersleyErrors.size(); k += 3)
+      if (womersleyErrors[k] >= t - inflow.flow.period * (1 - 1e-9)) e = PetscMax(e, womersleyErrors[k + 1]), n = PetscMax(n, womersleyErrors[k + 2]);
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Womersley's flow (R %.6e, alpha %.4g): velocity L2 error over the last period %.6e, relative %.6e\n", (double)inflow.radius, (double)(inflow.radius * PetscSqrtReal(2 * PETSC_PI / inflow.flow.period * opt.rho / opt.mu)), (double)e, (double)(e / n)));
+    report.results.insert(report.results.end(), {{"womersley_l2", e}, {"womersley_l2_relative", e / n}});
   }
   if (coupled) PetscCall(balance.Report(dm, forms, report));
   if (!probes.cell.empty()) report.series.push_back({"pressure", &probes});

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 /* The fluid block: velocity u (P2) and pressure p (P1) on the fluid region, Navier-Stokes in
    ALE form on the mesh moved by the geometry block's d_f (or on the fixed mesh), its no-slip
-   groups, inflow velocity or traction, and the exact data of the verification flows
+   groups, inflow velocity or traction, its outlets (traction-free, or the outlets block's 0D
+   models) with backflow damped, and the exact data of the verification flows
    (Poiseuille, the manufactured flows of verification/mms.h); it reports the fluxes through
    the inlet and outlet, the errors of the verification flows, and on a mesh moved by a
    coupled wall its volume balance (fluid/balance.h). */
@@ -9,6 +10,7 @@
 
 #include "fluid/assembly.h"
 #include "fluid/balance.h"
+#include "fluid/inflow.h"
 #include "base/waveform.h"
 #include "discretization/probes.h"
 #include "verification/mms.h"
@@ -32,9 +34,15 @@ struct FluidOptions {
   PulseShape pulseShape = PULSE_STEP;
   char                   pressureWaveform[PETSC_MAX_PATH_LEN] = ""; /* or p(t) from samples of one period */
   std::vector<PetscReal> pressureFourier;                          /* or p(t) as a Fourier series T,a0,a1,b1,... */
+  char                   flowWaveform[PETSC_MAX_PATH_LEN] = ""; /* or a flow rate Q(t) from samples of one period */
+  std::vector<PetscReal> flowFourier;                          /* or Q(t) as a Fourier series */
+  InflowProfileKind      profile  = INFLOW_PARABOLIC;          /* the flow rate's velocity profile */
+  PetscReal              flowRamp = 0;                         /* Q rises over this time */
+  PetscBool              womersley = PETSC_FALSE;              /* verification: errors against Womersley's flow */
   PetscReal inflowVelocity[3] = {0, 0, 0}; /* or a prescribed velocity there (cm/s) */
   PetscBool inflow = PETSC_FALSE;
-  char      inlet[64] = "inlet", outlet[64] = "outlet";
+  char      inlet[64] = "inlet", outlet[256] = "outlet"; /* outlets: groups, comma separated */
+  PetscReal backflow = 0.2;                /* beta of the backflow term on the outlets */
   PetscBool shapeDerivatives = PETSC_TRUE; /* on a moving mesh the Jacobian holds D_{d_f} R (exact Newton) */
   std::vector<PetscReal> probes;           /* points (3 each) where the pressure is recorded */
   PetscReal   poiseuille[3] = {0, 0, 0};   /* verification: R, L, pressure drop */
@@ -81,12 +89,16 @@ private:
   PetscInt              velocity = -1, pressure = -1;
   FluidForms            forms;
   FlowMMS               flow;                    /* the manufactured flow's data */
-  std::vector<CellFace> inletFaces, outletFaces; /* the faces of the fluxes (empty: no such group) */
+  std::vector<CellFace> inletFaces, outletFaces; /* the faces of the fluxes (empty: no such group), every outlet's */
+  std::vector<std::vector<CellFace>> outletsFaces; /* each outlet's, when there are several */
   Probes                probes;
   const Block          *mesh    = nullptr;      /* the geometry block, whose d_f moves the mesh (nullptr: a fixed mesh) */
   PetscBool             coupled = PETSC_FALSE;  /* the mesh moves with a coupled wall */
   VolumeBalance         balance;                /* coupled: the volume balance */
   Waveform              inletPressure;          /* p(t) of -fluid_inlet_pressure_waveform or _fourier (period 0: neither) */
+  InflowProfile         inflow;                 /* the flow rate Q(t) of -fluid_inflow_waveform or _fourier (period 0: neither) */
+  Womersley             exact;                  /* -womersley: the exact flow */
+  std::vector<PetscReal> womersleyErrors;       /* -womersley: per step t, the velocity's L2 error, the exact flow's L2 norm */
 };
 
 } // namespace fsi

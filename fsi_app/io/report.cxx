@@ -46,7 +46,7 @@ PetscErrorCode WriteReport(const char *file, MPI_Comm comm, const RunReport &r)
     auto list = [&](const char *key, const std::vector<PetscReal> &v, const char *after) -> PetscErrorCode {
       PetscFunctionBegin;
       PetscCall(PetscFPrintf(comm, fp, "\"%s\": [", key));
-      for (size_t j = 0; j < v.size(); j++) PetscCall(PetscFPrintf(comm, fp, "%s%.10e", j ? ", " : "", (double)v[j]));
+      for (size_t j = 0; j < v.size(); j++) PetscCall(PetscFPrintf(comm, fp, "%s%.16e", j ? ", " : "", (double)v[j])); /* every digit: tests recompute from them */
       PetscCall(PetscFPrintf(comm, fp, "]%s", after));
       PetscFunctionReturn(0);
     };

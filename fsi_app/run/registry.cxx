@@ -3,6 +3,7 @@
 #include "coupling/block.h"
 #include "fluid/block.h"
 #include "geometry/block.h"
+#include "outlets/block.h"
 #include "structure/block.h"
 #include "mesh/mesh.h"
 #include <algorithm>
@@ -20,6 +21,7 @@ static const BlockType Registry[] = {
   {"fluid",     [](const Scene &sc) { return std::unique_ptr<Block>(new FluidBlock(sc)); }    },
   {"geometry",  [](const Scene &sc) { return std::unique_ptr<Block>(new GeometryBlock(sc)); } },
   {"coupling",  [](const Scene &sc) { return std::unique_ptr<Block>(new CouplingBlock(sc)); } },
+  {"outlets",   [](const Scene &sc) { return std::unique_ptr<Block>(new OutletsBlock(sc)); }  },
 };
 
 PetscErrorCode CreateBlocks(Scene &sc, Blocks &b)

@@ -1,0 +1,187 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""ctest cases for fsi_app's arterial boundary conditions: an inflow rate Q(t) with its velocity
+profile (plug, parabolic, Womersley), the outlets block's 0D models (resistance, three-element
+Windkessel) on several outlets, implicit in Newton, in FaCSI's sweep and in a restart, and the
+backflow term. References: Womersley's analytic flow, the models' own equations integrated here
+by the scheme's recurrence from the flows the run reports, the volume balance, an exact solver."""
+import math
+import os
+import re
+import tempfile
+
+from fsilib import *  # noqa: F401,F403 (the cases' shared runners, meshes and scenes)
+from testlib import between, case, main, run
+
+SPLIT = ["-mesh", os.path.join(MESHES, "split_tube_L0.msh"), "-blocks", "fluid,outlets", "-fluid_region", "fluid",
+         "-fluid_noslip", "interface", "-fluid_inlet", "inlet", "-fluid_outlet", "outlet_a,outlet_b",
+         "-fluid_density", 1.06, "-fluid_viscosity", 0.035, "-fluid_inlet_pressure", 100,
+         "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps", "-snes_rtol", 1e-12, "-snes_atol", 1e-12]
+R, RP, C, RD, PD = 1000.0, 200.0, 1e-4, 800.0, 30.0
+MODELS = ["-outlets_outlet_a_resistance", R, "-outlets_outlet_b_rcr", f"{RP},{C},{RD},{PD}"]
+
+
+def series(r, group):
+    """(t, Q, P, Pi) of an outlet from the run report."""
+    s = next(p for p in r["probes"] if p["field"] == "outlet_" + group)
+    v = s["values"]
+    return s["t"], v[0::3], v[1::3], v[2::3]
+
+
+def windkessel(q, dt, scheme):
+    """Pi and P of C dPi/dt + (Pi - P_d)/R_d = Q, P = R_p Q + Pi, integrated by the scheme's own
+    recurrence from rest (Pi = P_d since t = -infinity) for the flows q at t = dt, 2 dt, ..."""
+    pi, past = [], [PD, PD]
+    for qn in q:
+        if scheme == "bdf2":  # (3 Pi^n - 4 Pi^(n-1) + Pi^(n-2)) / (2 dt)
+            x = (C * (4 * past[-1] - past[-2]) / (2 * dt) + PD / RD + qn) / (3 * C / (2 * dt) + 1 / RD)
+        else:
+            x = (C * past[-1] / dt + PD / RD + qn) / (C / dt + 1 / RD)
+        pi.append(x)
+        past.append(x)
+    return pi, [RP * qn + x for qn, x in zip(q, pi)]
+
+
+WOMERSLEY = ["-blocks", "fluid", "-fluid_region", "fluid", "-fluid_noslip", "interface", "-fluid_inlet", "inlet", "-fluid_outlet", "outlet",
+             "-fluid_density", 1.06, "-fluid_viscosity", 0.35, "-fluid_inflow_profile", "womersley", "-womersley", "-time_scheme", "bdf2",
+             "-fluid_inflow_fourier", "0.05,0.5,0.3,0.2", "-t_final", 0.1, "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps"]
+
+
+def rate(e0, e1, ratio=2):
+    return math.log(e0 / e1) / math.log(ratio)
+
+
+@case
+def womersley_flow():
+    """Womersley's flow in a rigid tube (R 0.15 cm, curved cells, 2 ranks): the flow rate
+    0.5 + 0.3 cos wt + 0.2 sin wt cm^3/s (period 0.05 s, Womersley number 2.93) through the inlet
+    with Womersley's profile, the exact flow's traction on the outlet; from rest for two periods
+    (the start's transient decays as exp(-t / 0.012 s)). The velocity's L2 error over the second
+    period against Womersley's analytic velocity (Bessel functions of complex argument) falls
+    at order >= 2.7 in h (dt = T/80; P2 on curved cells: 3) and >= 1.8 in dt (BDF2, dt = T/5, T/10
+    on the finer mesh); the inlet's flux is the given rate at the last step to 1e-12."""
+    mesh = lambda k: ["-mesh", os.path.join(MESHES, f"womersley_L{k}_o2.msh")]  # noqa: E731
+    fine = [scene(*WOMERSLEY, *mesh(k), "-dt", 6.25e-4, np=2) for k in (0, 1)]
+    e = [r["results"]["womersley_l2_relative"] for r in fine]
+    between(rate(*e), 2.7, 3.5, f"velocity L2 rate in h, errors {e}")
+    between(e[1], 0, 1e-3, "relative L2 error, level 1")
+    between(abs(fine[1]["results"]["inlet_flux"] + 0.8) / 0.8, 0, 1e-12, "inlet flux / Q(t_final)")
+    coarse = [scene(*WOMERSLEY, *mesh(1), "-dt", dt, np=2)["results"]["womersley_l2_relative"] for dt in (1e-2, 5e-3)]
+    between(rate(*coarse), 1.8, 2.3, f"velocity L2 rate in dt, errors {coarse}")
+
+
+@case
+def inflow_profiles():
+    """A steady flow rate (0.5 cm^3/s) through tube #1's circular inlet (curved cells) with each
+    profile: the inlet's flux is the rate to 1e-12 (each profile scaled by its discrete flux);
+    the parabolic profile (a Poisson solve on the inlet) and Womersley's (its mean: the
+    parabola) give the same flow to 2e-3; a uniform profile differs. Womersley's profile on a
+    half disc is refused: it needs a circular inlet."""
+    base = ["-mesh", os.path.join(MESHES, "tube1_L0_o2.msh"), "-blocks", "fluid", "-fluid_region", "fluid", "-fluid_noslip", "interface",
+            "-fluid_inlet", "inlet", "-fluid_outlet", "outlet", "-fluid_inflow_fourier", "1,0.5", "-dt", 0.01, "-t_final", 0.03,
+            "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps"]
+    r = {p: scene(*base, "-fluid_inflow_profile", p, np=2)["results"] for p in ("plug", "parabolic", "womersley")}
+    for p, res in r.items():
+        between(abs(res["inlet_flux"] + 0.5) / 0.5, 0, 1e-12, f"{p}: inlet flux / Q")
+    between(abs(r["parabolic"]["velocity_l2_norm"] / r["womersley"]["velocity_l2_norm"] - 1), 0, 2e-3, "parabolic / Womersley's mean: velocity L2 norm")
+    between(abs(r["plug"]["velocity_l2_norm"] / r["womersley"]["velocity_l2_norm"] - 1), 2e-3, 1, "plug / Womersley's mean: velocity L2 norm")
+    refused([APP, "-mesh", os.path.join(MESHES, "split_tube_L0.msh")] + base[2:] + ["-fluid_inlet", "outlet_a", "-fluid_outlet", "inlet", "-fluid_inflow_profile", "womersley"],
+            "-fluid_inflow_profile womersley: the inlet outlet_a is not a circle", np=2)
+
+
+@case
+def outlets_resistance_rcr():
+    """A rigid tube whose outlet is split into two groups, driven by an inlet pressure: one outlet
+    a resistance, the other an RCR Windkessel, on 1 and 2 ranks, backward Euler and BDF2. At every
+    step P = R Q + P_d on the first to round-off, the second's (Pi, P) equal the Windkessel ODE's
+    recurrence from the reported flows to round-off, each outlet's unknown Q equals the flux of
+    the velocity through it, and inflow = the sum of the outflows (the volume balance)."""
+    dt = 1e-2
+    for scheme, np in (("backward_euler", 1), ("bdf2", 2)):
+        r = scene(*SPLIT, *MODELS, "-dt", dt, "-t_final", 6 * dt, "-time_scheme", scheme, np=np)
+        assert r["unknowns"]["outlets"] == 6, r["unknowns"]
+        t, qa, pa, _ = series(r, "outlet_a")
+        assert len(t) == 6 and abs(t[-1] - 6 * dt) < 1e-12, t
+        worst = max(abs(p - R * q) / abs(p) for q, p in zip(qa, pa))
+        between(worst, 0, 1e-12, f"{scheme}: |P - R Q| / P at the resistance outlet, every step")
+        _, qb, pb, pib = series(r, "outlet_b")
+        pi, p = windkessel(qb, dt, scheme)
+        worst = max(max(abs(x - y) / abs(y) for x, y in zip(pib, pi)), max(abs(x - y) / abs(y) for x, y in zip(pb, p)))
+        between(worst, 0, 1e-12, f"{scheme}: Windkessel (Pi, P) against the ODE's recurrence, every step")
+        res = r["results"]
+        for g, q in (("outlet_a", qa[-1]), ("outlet_b", qb[-1])):
+            between(abs(q - res["outlet_flux_" + g]) / abs(q), 0, 1e-9, f"{g}: the unknown Q / the flux of u")
+        balance = res["inlet_flux"] + res["outlet_flux_outlet_a"] + res["outlet_flux_outlet_b"]
+        between(abs(balance) / abs(res["inlet_flux"]), 0, 1e-10, "inflow - outflows, relative")
+        between(res["outlet_flux_outlet_a"] / res["outlet_flux"], 0.2, 0.8, "the resistance outlet's share of the flow")
+
+
+@case
+def backflow_stabilization():
+    """The backflow term -beta rho (u.n)_- u.v on the outlets. Steady flow driven backwards (the
+    inlet's pressure -200 dyn/cm^2 below the outlets'), so fluid enters through the traction-free
+    outlets at Re ~ 300: without the term Newton does not converge (the energy the entering
+    fluid brings in is unbounded); with beta = 0.2 it converges quadratically (the term's
+    Jacobian is exact), and beta = 1 damps the entering flow more. While the flow leaves
+    everywhere the term is exactly zero: beta = 0 and 0.2 give the same transient run."""
+    steady = SPLIT[:3] + ["fluid"] + SPLIT[4:] + ["-fluid_inlet_pressure", -200, "-snes_monitor", "-snes_max_it", 40, "-max_step_cuts", 0]
+    off = run([APP] + [str(o) for o in steady] + ["-fluid_backflow_stabilization", 0], np=2, fail=True)
+    assert re.search(r"^load step 1/1 .* DIVERGED_", off, re.M), off[-2000:]
+    on = flow(*steady, np=2)
+    norms = on["norms"]
+    assert on["newton"] <= 8 and norms[-1] < 1e-12 * norms[0] and norms[-2] < 1e-3 * norms[-3], norms
+    between(on["results"]["inlet_flux"], 1, 10, "the flux leaving through the inlet (cm^3/s)")
+    damped = flow(*steady, "-fluid_backflow_stabilization", 1, np=2)
+    between(damped["results"]["inlet_flux"] / on["results"]["inlet_flux"], 0.3, 0.95, "beta 1 / beta 0.2: the flow entering the outlets")
+    forward = [SPLIT[:3] + ["fluid"] + SPLIT[4:], "-dt", 0.01, "-t_final", 0.06]
+    a, b = (scene(*forward[0], *forward[1:], "-fluid_backflow_stabilization", beta)["results"] for beta in (0, 0.2))
+    for key in ("outlet_flux", "velocity_l2_norm", "pressure_l2_norm"):
+        assert a[key] == b[key], (key, a[key], b[key])
+
+
+@case
+def outlets_restart():
+    """Restart = uninterrupted run with a Windkessel (BDF2): the capacitor's pressure is a state
+    of the checkpoint, so the resumed run's outlet series equal the uninterrupted run's to 1e-12;
+    the per-outlet CSV holds every step once."""
+    tmp = tempfile.mkdtemp()
+    f = lambda name: os.path.join(tmp, name)  # noqa: E731
+    base = SPLIT + MODELS + ["-dt", 1e-2, "-time_scheme", "bdf2"]
+    full = scene(*base, "-t_final", 0.06)
+    run([APP] + [str(o) for o in base] + ["-t_final", 0.03, "-checkpoint", f("c.chk"), "-checkpoint_every", 1, "-output", f("o.xdmf")])
+    resumed = scene(*base, "-t_final", 0.06, "-restart", f("c.chk"), "-output", f("o.xdmf"))
+    assert resumed["restarted_at_step"] == 3, resumed["restarted_at_step"]
+    _, q, p, pi = series(full, "outlet_b")
+    _, q2, p2, pi2 = series(resumed, "outlet_b")
+    for a, b, name in ((q, q2, "Q"), (p, p2, "P"), (pi, pi2, "Pi")):
+        between(max(abs(x - y) / abs(x) for x, y in zip(a[3:], b)), 0, 1e-12, f"restarted / uninterrupted {name}")
+    with open(f("o_outlet_outlet_b.csv")) as csv:
+        rows = csv.read().split()
+    assert rows[0] == "t,Q,P,Pi" and len(rows) == 7, rows
+    ts = [float(r.split(",")[0]) for r in rows[1:]]
+    assert all(abs(x - 0.01 * (k + 1)) < 1e-12 for k, x in enumerate(ts)), ts
+    between(abs(float(rows[-1].split(",")[2]) / p[-1] - 1), 0, 1e-9, "the CSV's last P / the report's")
+
+
+@case
+def outlets_facsi():
+    """The coupled tube #1 (FaCSI, 2 ranks) with a resistance outlet instead of the traction-free
+    one: its unknowns join the split 'outlets' after the fluid; Newton keeps its steps and GMRES
+    its iterations per Newton step within 20 % of the traction-free run's, and MUMPS on the whole
+    system gives the same outlet flow and pressure."""
+    facsi = ["-options_file", os.path.join(SCENES, "fsi_facsi.opts"), "-t_final", 2.5e-3]
+    outlet = ["-blocks", "structure,fluid,geometry,coupling,outlets", "-outlets_outlet_resistance", 1e4]
+    free = fsi(*facsi, scene_file=os.path.join(SCENES, "fsi_tube1_arterial.opts"))
+    r = fsi(*facsi, *outlet, scene_file=os.path.join(SCENES, "fsi_tube1_arterial.opts"))
+    assert r["unknowns"]["outlets"] == 3, r["unknowns"]
+    assert r["newton"] <= free["newton"] + 1, (r["newton"], free["newton"])
+    between((r["krylov"] / r["newton"]) / (free["krylov"] / free["newton"]), 0.8, 1.2, "GMRES per Newton, resistance / traction-free")
+    exact = fsi("-options_file", os.path.join(SCENES, "fsi_mumps.opts"), "-t_final", 2.5e-3, *outlet, scene_file=os.path.join(SCENES, "fsi_tube1_arterial.opts"))
+    assert exact["krylov"] == exact["newton"], "one MUMPS solve per Newton step"
+    for key in ("outlet_outlet_flow", "outlet_outlet_pressure"):
+        between(abs(r["results"][key] / exact["results"][key] - 1), 0, 1e-5, f"{key}: FaCSI / MUMPS")
+    between(r["results"]["outlet_outlet_pressure"] / (1e4 * r["results"]["outlet_outlet_flow"]), 1 - 1e-12, 1 + 1e-12, "P / (R Q)")
+
+
+if __name__ == "__main__":
+    main("fsi_outlets")
