@@ -9,7 +9,7 @@ namespace fsi {
 /* Options whose value is a file the run reads. */
 static bool NamesInputFile(const std::string &option)
 {
-  return option == "-options_file" || option == "-mesh" || option == "-restart" || option == "-fluid_inlet_pressure_waveform";
+  return option == "-options_file" || option == "-mesh" || option == "-restart" || option == "-fluid_inlet_pressure_waveform" || option == "-fluid_inflow_waveform";
 }
 
 static bool IsFile(const std::string &path)

@@ -49,21 +49,21 @@ PetscErrorCode OutletsBlock::ReadOptions(std::map<std::string, std::string> &pro
   else groups = {"<group>"}; /* -help: the pattern */
   for (const std::string &g : groups) {
     const std::string rName = "-outlets_" + g + "_resistance", rcrName = "-outlets_" + g + "_rcr";
-    PetscReal         v[4] = {0, 0, 0, 0}, w[4] = {0, 0, 0, 0};
-    PetscInt          nr = 2, nrcr = 4;
+    PetscReal         v[4] = {0, 0, 0, 0}, w[5] = {0, 0, 0, 0, 0};
+    PetscInt          nr = 2, nrcr = 5;
     PetscBool         isR = PETSC_FALSE, isRCR = PETSC_FALSE;
     PetscCall(r.Reals(rName.c_str(), "the outlet's resistance: P = R Q + P_d; R,P_d (dyn s/cm^5, dyn/cm^2; P_d 0 if left out)", v, &nr, &isR, Any, PROBLEM));
-    PetscCall(r.Reals(rcrName.c_str(), "three-element Windkessel: P = R_p Q + Pi, C dPi/dt + (Pi - P_d)/R_d = Q; R_p,C,R_d,P_d (dyn s/cm^5, cm^5/dyn, dyn s/cm^5, dyn/cm^2; P_d 0 if left out)", w, &nrcr, &isRCR, Any, PROBLEM));
+    PetscCall(r.Reals(rcrName.c_str(), "three-element Windkessel: P = R_p Q + Pi, C dPi/dt + (Pi - P_d)/R_d = Q; R_p,C,R_d,P_d,Pi_0 (dyn s/cm^5, cm^5/dyn, dyn s/cm^5, dyn/cm^2, dyn/cm^2; P_d 0 and Pi_0 = P_d if left out): Pi_0 the capacitor's pressure at t = 0", w, &nrcr, &isRCR, Any, PROBLEM));
     if (!fluid) continue;
     PetscCheck(!(isR && isRCR), PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "%s and %s: one condition per outlet", rName.c_str(), rcrName.c_str());
     Outlet o;
     o.group = g;
     if (isR) {
       PetscCheck(nr >= 1 && v[0] > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "%s: give R > 0 (and optionally P_d): R,P_d", rName.c_str());
-      o.model = OUTLET_RESISTANCE, o.Rp = v[0], o.Pd = v[1];
+      o.model = OUTLET_RESISTANCE, o.Rp = v[0], o.Pd = o.P0 = v[1];
     } else if (isRCR) {
-      PetscCheck(nrcr >= 3 && w[0] >= 0 && w[1] > 0 && w[2] > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "%s: give R_p >= 0, C > 0 and R_d > 0 (and optionally P_d): R_p,C,R_d,P_d", rcrName.c_str());
-      o.model = OUTLET_RCR, o.Rp = w[0], o.C = w[1], o.Rd = w[2], o.Pd = w[3];
+      PetscCheck(nrcr >= 3 && w[0] >= 0 && w[1] > 0 && w[2] > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "%s: give R_p >= 0, C > 0 and R_d > 0 (and optionally P_d and Pi_0): R_p,C,R_d,P_d,Pi_0", rcrName.c_str());
+      o.model = OUTLET_RCR, o.Rp = w[0], o.C = w[1], o.Rd = w[2], o.Pd = w[3], o.P0 = nrcr == 5 ? w[4] : w[3];
     } else continue; /* traction-free */
     outlets.push_back(o);
   }
@@ -272,15 +272,15 @@ void OutletsBlock::Couplings(Sparsity &s) const
   }
 }
 
-/* At rest: no flow, every pressure the distal one. */
+/* No flow, the capacitor at Pi_0 (by default the distal pressure: at rest). */
 PetscErrorCode OutletsBlock::InitialState(DM, Vec x, PetscBool *set)
 {
   PetscFunctionBegin;
   *set = PETSC_FALSE;
   for (const Outlet &o : outlets) {
     const PetscInt    idx[2] = {o.global + P, o.global + PI};
-    const PetscScalar v[2]   = {o.Pd, o.Pd};
-    if (o.Pd != 0) *set = PETSC_TRUE;
+    const PetscScalar v[2]   = {o.P0, o.P0};
+    if (o.P0 != 0) *set = PETSC_TRUE;
     if (o.local >= 0) PetscCall(VecSetValues(x, 2, idx, v, INSERT_VALUES));
   }
   PetscCall(VecAssemblyBegin(x));

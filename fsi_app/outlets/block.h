@@ -32,6 +32,7 @@ struct Outlet {
   std::string group;
   OutletModel model = OUTLET_FREE;
   PetscReal   Rp = 0, C = 0, Rd = 0, Pd = 0; /* dyn s/cm^5, cm^5/dyn, dyn s/cm^5, dyn/cm^2 */
+  PetscReal   P0 = 0;                        /* Pi at t = 0 (dyn/cm^2) */
   /* set up: its faces among this rank's velocity cells, where its unknowns are */
   std::vector<CellFace> faces;
   PetscInt              local = -1;  /* the owner's local offset of Q (P, Pi follow); -1 elsewhere */

@@ -1,0 +1,153 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: BSD-2-Clause
+"""The arterial boundary conditions' benchmarks (2 ranks, FaCSI):
+
+reflection  The paper's tube #1 pulse (scenes/fsi_tube1_arterial.opts, tube1_L0, 1330 dyn/cm^2
+            for 3 ms, dt 0.5 ms, 15 ms) with the traction-free outlet, then with a resistance
+            equal to the tube's characteristic impedance Z_c = rho c / A, c the wave speed the
+            first run measures (probes on the axis at z = 0.625 and 1.25 cm). The reflected wave
+            is the pressure at z = 0.625 cm after the incident pulse has passed: max |p| over
+            t >= (2 L - z) / c - 1 ms, when the reflection from the outlet arrives. Writes
+            bench/results/arterial_reflection.{csv,cmd,png} (the two pressure series, and the
+            ratio of the reflected amplitudes).
+carotid     scenes/carotid_tube.opts for three cardiac cycles (552 steps of 5 ms, BDF2) with
+            scenes/fsi_facsi_lu_fluid.opts: the outlet's flow and pressure every step (the run's
+            CSV) and per cycle the pressure's range and mean, and their change from cycle 2 to 3.
+            Writes bench/results/arterial_carotid.{csv,cmd,png} and arterial_carotid_cycles.csv.
+
+Usage: scripts/bench_arterial.py reflection|carotid [--app PATH] [--plot]"""
+import csv
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+from benchlib import ENV, TOP, check_command_line, loadavg, write_results
+
+check_command_line(__doc__, valued=("--app",), flags=("--plot",), modes=("reflection", "carotid"))
+OUT = os.path.join(TOP, "bench", "results", "arterial_")
+MMHG, PREF, PERIOD = 1333.2, 80.0, 0.92  # the carotid scene's pressures are relative to 80 mmHg
+L, RI, RHO = 2.5, 0.15, 1.0              # tube #1
+Z = (0.625, 1.25)
+
+
+def app():
+    return sys.argv[sys.argv.index("--app") + 1] if "--app" in sys.argv else os.path.join(TOP, "install", "bin", "fsi_app")
+
+
+def report_of(cmd, report, log):
+    with open(log, "w") as f:
+        p = subprocess.run(cmd.split(), env=ENV, cwd=TOP, stdout=f, stderr=subprocess.STDOUT)
+    if not os.path.exists(report):
+        sys.exit(f"bench_arterial: the run wrote no report (exit {p.returncode}); see {log}")
+    return json.load(open(report))
+
+
+def reflection():
+    tmp = tempfile.mkdtemp()
+    base = (f"mpiexec -n 2 {app()} -options_file scenes/fsi_tube1_arterial.opts -options_file scenes/fsi_facsi.opts -t_final 1.5e-2 "
+            f"-fluid_probes " + ",".join(f"0,0,{z}" for z in Z))
+    load = loadavg()
+    free = base + f" -report {tmp}/free.json"
+    r0 = report_of(free, f"{tmp}/free.json", f"{tmp}/free.log")
+    c = r0["results"]["wave_speed"]
+    zc = RHO * c / (3.141592653589793 * RI * RI)
+    matched = base + f" -blocks structure,fluid,geometry,coupling,outlets -outlets_outlet_resistance {zc:.1f} -report {tmp}/matched.json"
+    r1 = report_of(matched, f"{tmp}/matched.json", f"{tmp}/matched.log")
+    t_refl = (2 * L - Z[0]) / c - 1e-3
+    rows, amp = [], {}
+    for name, r in (("traction_free", r0), ("resistance_zc", r1)):
+        p = next(s for s in r["probes"] if s["field"] == "pressure")
+        n = len(Z)
+        series = [(t, p["values"][n * k]) for k, t in enumerate(p["t"])]
+        amp[name] = max(abs(v) for t, v in series if t >= t_refl)
+        for t, v in series:
+            rows.append({"outlet": name, "t": t, "pressure_z0.625": v})
+    print(f"wave speed {c:.1f} cm/s, Z_c {zc:.1f} dyn s/cm^5; reflected amplitude at z = 0.625 (t >= {1e3 * t_refl:.2f} ms): "
+          f"traction-free {amp['traction_free']:.1f}, Z_c {amp['resistance_zc']:.1f} dyn/cm^2, ratio {amp['traction_free'] / amp['resistance_zc']:.2f}")
+    rows.append({"outlet": "reflected_amplitude_ratio", "t": t_refl, "pressure_z0.625": amp["traction_free"] / amp["resistance_zc"]})
+    cmds = [x.replace(app(), "install/bin/fsi_app").replace(tmp + "/", "") for x in (free, matched)]
+    write_results(OUT + "reflection", rows, cmds, f"scripts/bench_arterial.py reflection (c {c:.1f} cm/s, Z_c {zc:.1f} dyn s/cm^5, "
+                  f"reflected amplitude {amp['traction_free']:.1f} -> {amp['resistance_zc']:.1f} dyn/cm^2)", load)
+    shutil.rmtree(tmp)
+    plot_reflection()
+
+
+def plot_reflection():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = list(csv.DictReader(open(OUT + "reflection.csv")))
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for name, label in (("traction_free", "traction-free outlet"), ("resistance_zc", "resistance R = Z_c")):
+        sel = [r for r in rows if r["outlet"] == name]
+        ax.plot([1e3 * float(r["t"]) for r in sel], [float(r["pressure_z0.625"]) for r in sel], label=label)
+    t_refl = next(float(r["t"]) for r in rows if r["outlet"] == "reflected_amplitude_ratio")
+    ax.axvline(1e3 * t_refl, color="grey", ls=":", label="reflection arrives")
+    ax.set(xlabel="t (ms)", ylabel="pressure on the axis at z = 0.625 cm (dyn/cm²)", title="tube #1: the pulse and its reflection from the outlet")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(OUT + "reflection.png", dpi=120)
+
+
+def carotid():
+    tmp = tempfile.mkdtemp()
+    cmd = (f"mpiexec -n 2 {app()} -options_file scenes/carotid_tube.opts -options_file scenes/fsi_facsi_lu_fluid.opts "
+           f"-output {tmp}/carotid.xdmf -output_every 1000 -report {tmp}/r.json")
+    load = loadavg()
+    r = report_of(cmd, f"{tmp}/r.json", OUT + "carotid.log")
+    out = next(s for s in r["probes"] if s["field"] == "outlet_outlet")
+    steps = {s["step"]: s for s in r["steps"]}
+    rows = []
+    for k, t in enumerate(out["t"]):
+        q, p, pi = out["values"][3 * k:3 * k + 3]
+        s = steps.get(k + 1, {})
+        rows.append({"t": t, "Q": q, "P_mmHg": p / MMHG + PREF, "Pi_mmHg": pi / MMHG + PREF, "newton": s.get("newton"), "gmres": s.get("krylov"),
+                     "seconds": s.get("seconds", {}).get("total")})
+    write_results(OUT + "carotid", rows, [cmd.replace(app(), "install/bin/fsi_app").replace(tmp + "/", "")], "scripts/bench_arterial.py carotid", load)
+    cycles(rows)
+    shutil.rmtree(tmp)
+    plot_carotid()
+
+
+def cycles(rows):
+    out = []
+    for c in range(3):
+        p = [r["P_mmHg"] for r in rows if c * PERIOD < float(r["t"]) <= (c + 1) * PERIOD + 1e-9]
+        q = [r["Q"] for r in rows if c * PERIOD < float(r["t"]) <= (c + 1) * PERIOD + 1e-9]
+        out.append({"cycle": c + 1, "P_min_mmHg": min(p), "P_max_mmHg": max(p), "P_mean_mmHg": sum(p) / len(p), "Q_mean": sum(q) / len(q), "Q_max": max(q)})
+    for key in ("P_min_mmHg", "P_max_mmHg", "P_mean_mmHg"):
+        out.append({"cycle": f"change_2_3_{key}", "P_mean_mmHg": abs(out[2][key] - out[1][key]) / abs(out[2][key])})
+    with open(OUT + "carotid_cycles.csv", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=["cycle", "P_min_mmHg", "P_max_mmHg", "P_mean_mmHg", "Q_mean", "Q_max"])
+        w.writeheader()
+        w.writerows(out)
+    for o in out:
+        print(o)
+
+
+def plot_carotid():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = list(csv.DictReader(open(OUT + "carotid.csv")))
+    t = [float(r["t"]) for r in rows]
+    fig, ax = plt.subplots(figsize=(8, 4))
+    ax.plot(t, [float(r["P_mmHg"]) for r in rows], color="C3", label="outlet pressure P")
+    ax.set(xlabel="t (s)", ylabel="pressure (mmHg)", title="carotid tube: outlet (RCR) over three cardiac cycles")
+    ax2 = ax.twinx()
+    ax2.plot(t, [float(r["Q"]) for r in rows], color="C0", label="outlet flow Q")
+    ax2.set(ylabel="flow (mL/s)")
+    fig.legend(loc="upper right")
+    fig.tight_layout()
+    fig.savefig(OUT + "carotid.png", dpi=120)
+
+
+if __name__ == "__main__":
+    mode = sys.argv[1]
+    if "--plot" in sys.argv:
+        plot_reflection() if mode == "reflection" else plot_carotid()
+    else:
+        reflection() if mode == "reflection" else carotid()
