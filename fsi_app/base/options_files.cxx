@@ -9,7 +9,9 @@ namespace fsi {
 /* Options whose value is a file the run reads. */
 static bool NamesInputFile(const std::string &option)
 {
-  return option == "-options_file" || option == "-mesh" || option == "-restart" || option == "-fluid_inlet_pressure_waveform" || option == "-fluid_inflow_waveform";
+  const std::string outlet = "_pressure_waveform"; /* -outlets_<group>_pressure_waveform */
+  return option == "-options_file" || option == "-mesh" || option == "-restart" || option == "-fluid_inlet_pressure_waveform" || option == "-fluid_inflow_waveform" ||
+         (option.rfind("-outlets_", 0) == 0 && option.size() > outlet.size() && option.compare(option.size() - outlet.size(), outlet.size(), outlet) == 0);
 }
 
 static bool IsFile(const std::string &path)

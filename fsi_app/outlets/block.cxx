@@ -6,6 +6,7 @@
 #include "mesh/mesh.h"
 #include <petscsf.h>
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -54,11 +55,22 @@ PetscErrorCode OutletsBlock::ReadOptions(std::map<std::string, std::string> &pro
     PetscBool         isR = PETSC_FALSE, isRCR = PETSC_FALSE;
     PetscCall(r.Reals(rName.c_str(), "the outlet's resistance: P = R Q + P_d; R,P_d (dyn s/cm^5, dyn/cm^2; P_d 0 if left out)", v, &nr, &isR, Any, PROBLEM));
     PetscCall(r.Reals(rcrName.c_str(), "three-element Windkessel: P = R_p Q + Pi, C dPi/dt + (Pi - P_d)/R_d = Q; R_p,C,R_d,P_d,Pi_0 (dyn s/cm^5, cm^5/dyn, dyn s/cm^5, dyn/cm^2, dyn/cm^2; P_d 0 and Pi_0 = P_d if left out): Pi_0 the capacitor's pressure at t = 0", w, &nrcr, &isRCR, Any, PROBLEM));
+    const std::string      waveName = "-outlets_" + g + "_pressure_waveform", fourierName = "-outlets_" + g + "_pressure_fourier";
+    char                   wave[PETSC_MAX_PATH_LEN] = "";
+    std::vector<PetscReal> fourier;
+    PetscCall(r.String(waveName.c_str(), "a prescribed outlet pressure P(t) from a file of samples 't p' (s, dyn/cm^2) over one period, the last repeating the first; periodic cubic spline (named in an options file: relative to that file)", wave, sizeof(wave), PROBLEM));
+    PetscCall(r.Numbers(fourierName.c_str(), "a prescribed outlet pressure P(t) = a0 + sum_k a_k cos(2 pi k t/T) + b_k sin(2 pi k t/T) as T,a0,a1,b1,... (s, dyn/cm^2)", fourier, 41, "numbers separated by commas; T, then at most 20 harmonics", PROBLEM));
     if (!fluid) continue;
-    PetscCheck(!(isR && isRCR), PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "%s and %s: one condition per outlet", rName.c_str(), rcrName.c_str());
+    const PetscBool isP = (PetscBool)(wave[0] || !fourier.empty());
+    PetscCheck((int)isR + (int)isRCR + (int)(wave[0] != 0) + (int)!fourier.empty() <= 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-outlets_%s_*: one condition per outlet (a resistance, an RCR, or a pressure waveform or Fourier series)", g.c_str());
     Outlet o;
     o.group = g;
-    if (isR) {
+    if (isP) {
+      PetscCheck(sc.Dynamic(), PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "%s: the outlet pressure is a function of time: give a time step (-dt)", wave[0] ? waveName.c_str() : fourierName.c_str());
+      if (wave[0]) PetscCall(WaveformRead(PETSC_COMM_WORLD, waveName.c_str(), wave, o.pressure));
+      else PetscCall(WaveformFourier(fourierName.c_str(), fourier.data(), (PetscInt)fourier.size(), o.pressure));
+      o.model = OUTLET_PRESSURE, o.P0 = o.pressure.Value(0);
+    } else if (isR) {
       PetscCheck(nr >= 1 && v[0] > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "%s: give R > 0 (and optionally P_d): R,P_d", rName.c_str());
       o.model = OUTLET_RESISTANCE, o.Rp = v[0], o.Pd = o.P0 = v[1];
     } else if (isRCR) {
@@ -69,7 +81,7 @@ PetscErrorCode OutletsBlock::ReadOptions(std::map<std::string, std::string> &pro
   }
   PetscOptionsEnd();
   if (!fluid) PetscCall(RefuseWithoutBlock());
-  else PetscCheck(!outlets.empty(), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-blocks ...,outlets: no outlet of -fluid_outlet %s has a model; give -outlets_<group>_resistance or -outlets_<group>_rcr, or leave outlets out of -blocks (traction-free outlets)", fluid->Group("outlet").c_str());
+  else PetscCheck(!outlets.empty(), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-blocks ...,outlets: no outlet of -fluid_outlet %s has a model; give -outlets_<group>_resistance, _rcr, _pressure_waveform or _pressure_fourier, or leave outlets out of -blocks (traction-free outlets)", fluid->Group("outlet").c_str());
   if (fluid) {
     const std::string inlet = fluid->Group("inlet"), interface = geometry ? geometry->Group("interface") : "";
     for (const Outlet &o : outlets) PetscCheck(o.group != inlet && o.group != interface, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-fluid_outlet %s: the outlet with a 0D model is also the %s; an outlet is a group of its own", o.group.c_str(), o.group == inlet ? "inlet (-fluid_inlet)" : "fluid-wall interface (-geometry_interface)");
@@ -225,6 +237,7 @@ PetscErrorCode OutletsBlock::Residual(const PetscScalar *x, PetscScalar *f)
     f[o.local + Q] += y[Q] - sum[2 * k];
     f[o.local + P] += y[P] - o.Rp * y[Q] - y[PI];
     if (o.model == OUTLET_RESISTANCE) f[o.local + PI] += y[PI] - o.Pd;
+    else if (o.model == OUTLET_PRESSURE) f[o.local + PI] += y[PI] - o.pressure.Value(time);
     else f[o.local + PI] += o.C * Rate(history, x, past, o.local + PI, &c) + (y[PI] - o.Pd) / o.Rd - y[Q];
   }
   PetscCall(TimeHistoryRestorePast(history, past));
@@ -252,7 +265,8 @@ PetscErrorCode OutletsBlock::Jacobian(const PetscScalar *x, Mat J)
     PetscReal      c;
     const PetscInt rows[3] = {o.global + Q, o.global + P, o.global + PI};
     Rate(history, x, past, o.local + PI, &c);
-    const PetscScalar capacitor = o.model == OUTLET_RESISTANCE ? 1.0 : o.C * c + 1 / o.Rd, inflow = o.model == OUTLET_RESISTANCE ? 0.0 : -1.0;
+    const PetscBool   rcr = (PetscBool)(o.model == OUTLET_RCR);
+    const PetscScalar capacitor = rcr ? o.C * c + 1 / o.Rd : 1.0, inflow = rcr ? -1.0 : 0.0;
     const PetscScalar A[9]      = {1, 0, 0, -o.Rp, 1, -1, inflow, 0, capacitor};
     PetscCall(MatSetValues(J, 3, rows, 3, rows, A, ADD_VALUES));
   }
@@ -304,7 +318,7 @@ PetscErrorCode OutletsBlock::WriteCsv(const Outlet &o, PetscInt step) const
       std::ifstream in(file);
       std::string   line;
       while (std::getline(in, line))
-        if (!line.empty() && line[0] != 't' && std::stod(line) < o.series.t[0] - 1e-12) keep.push_back(line);
+        if (!line.empty() && line[0] != 't' && std::strtod(line.c_str(), nullptr) < o.series.t[0] - 1e-12) keep.push_back(line);
     }
     std::ofstream out(file, std::ios::trunc);
     out << "t,Q,P,Pi\n";
@@ -347,7 +361,7 @@ PetscErrorCode OutletsBlock::Results(DM, Vec, PetscReal, RunReport &report)
   for (const Outlet &o : outlets) {
     if (o.series.t.empty()) continue;
     const PetscReal *v = &o.series.values[o.series.values.size() - 3];
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "outlet %s (%s): Q %.6e cm^3/s P %.6e dyn/cm^2\n", o.group.c_str(), o.model == OUTLET_RCR ? "RCR" : "resistance", (double)v[0], (double)v[1]));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "outlet %s (%s): Q %.6e cm^3/s P %.6e dyn/cm^2\n", o.group.c_str(), o.model == OUTLET_RCR ? "RCR" : o.model == OUTLET_PRESSURE ? "pressure" : "resistance", (double)v[0], (double)v[1]));
     report.results.insert(report.results.end(), {{"outlet_" + o.group + "_flow", v[0]}, {"outlet_" + o.group + "_pressure", v[1]}});
     report.series.push_back({"outlet_" + o.group, &o.series});
   }

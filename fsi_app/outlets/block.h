@@ -7,9 +7,11 @@
      pressure        P_k - R_p Q_k - Pi_k = 0
      capacitor       resistance: Pi_k - P_d = 0
                      RCR:        C d_t Pi_k + (Pi_k - P_d) / R_d - Q_k = 0
+                     pressure:   Pi_k - p(t) = 0 (and R_p = 0: P_k = p(t))
    with d_t the scene's time scheme (core/time_history.h), and in the fluid's momentum rows the
    traction -P_k n on Gamma_k: + P_k int_{Gamma_k} phi . n da. A resistance R is R_p = R; the
-   three-element Windkessel (RCR) has R_p, C, R_d and the distal pressure P_d. An outlet without
+   three-element Windkessel (RCR) has R_p, C, R_d and the distal pressure P_d; a prescribed
+   pressure p(t) (samples or a Fourier series) is the resistance 0 at P_d = p(t). An outlet without
    a model is traction-free. Each modelled outlet adds one dense row (its flow) and one dense
    column (its pressure) to the Jacobian. The unknowns form the split "outlets" after the fluid
    in FaCSI's multiplicative sweep: the fluid's step leaves out the P_k columns (a rank-one term
@@ -22,17 +24,19 @@
 
 #include "core/block.h"
 #include "core/scene.h"
+#include "base/waveform.h"
 #include "discretization/probes.h"
 
 namespace fsi {
 
-enum OutletModel { OUTLET_FREE, OUTLET_RESISTANCE, OUTLET_RCR };
+enum OutletModel { OUTLET_FREE, OUTLET_RESISTANCE, OUTLET_RCR, OUTLET_PRESSURE };
 
 struct Outlet {
   std::string group;
   OutletModel model = OUTLET_FREE;
   PetscReal   Rp = 0, C = 0, Rd = 0, Pd = 0; /* dyn s/cm^5, cm^5/dyn, dyn s/cm^5, dyn/cm^2 */
   PetscReal   P0 = 0;                        /* Pi at t = 0 (dyn/cm^2) */
+  Waveform    pressure;                      /* OUTLET_PRESSURE: P(t) */
   /* set up: its faces among this rank's velocity cells, where its unknowns are */
   std::vector<CellFace> faces;
   PetscInt              local = -1;  /* the owner's local offset of Q (P, Pi follow); -1 elsewhere */
@@ -52,6 +56,7 @@ public:
   PetscErrorCode AddFields(DM dm) override;
   PetscErrorCode SetUp(DM dm) override;
   void           Attach(SNES, const TimeHistory *h) override { history = h; }
+  PetscErrorCode SetTime(PetscReal t) override { return time = t, 0; }
 
   PetscErrorCode Residual(const PetscScalar *x, PetscScalar *f) override;
   PetscErrorCode Jacobian(const PetscScalar *x, Mat P) override;
@@ -75,6 +80,7 @@ private:
   const TimeHistory  *history = nullptr;
   FaceRule            rule;
   PetscInt            field = -1;
+  PetscReal           time  = 0; /* of the step being solved */
   std::vector<Outlet> outlets; /* the modelled ones, in the order of -fluid_outlet */
 };
 
