@@ -4,7 +4,6 @@
 #include "discretization/nodes.h"
 #include "discretization/p2tet.h"
 #include <petscksp.h>
-#include <set>
 
 namespace fsi {
 
