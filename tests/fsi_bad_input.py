@@ -69,7 +69,12 @@ def structure_bad_options():
                       (["-blocks", "structure,fluid,geometry,coupling", "-fluid_density", 0], "-fluid_density: value must be positive (got 0)"),
                       (["-lame", "2,1"], "-lame 2,1: the inner radius must be smaller than the outer one (give Ri,Ro)"),
                       (["-lame", "1"], "-lame: give the inner and the outer radius, Ri,Ro (got 1 values)"),
-                      (["-lame", "-1,2"], "-lame: value 1 must be positive (got -1)")):
+                      (["-lame", "-1,2"], "-lame: value 1 must be positive (got -1)"),
+                      (["-structure_support", -1], "-structure_support: value must be >= 0 (got -1)"),
+                      (["-structure_support", "1,2,3"], "-structure_support 1,2,3: give at most 2 values (got 3)"),
+                      (["-structure_body_force", "1,2,3,4"], "-structure_body_force 1,2,3,4: give at most 3 values (got 4)"),
+                      (["-structure_support", 1, "-structure_support_group", "wall"], "-structure_support_group wall: the group holds cells, and the option takes a group of faces"),
+                      (["-structure_support", 1, "-structure_support_group", "adventitia"], "has no physical group 'adventitia', which this scene needs")):
         refused([APP, "-mesh", mesh] + WALL[2:] + [str(o) for o in opts], msg)
 
 

@@ -55,6 +55,36 @@ def structure_lame():
 
 
 @case
+def structure_support():
+    """The tissue support -structure_support k_s[,c_s] on the quarter cylinder's outer surface
+    (Lame's cylinder under internal pressure 1, E = 1000, nu = 0.3, curved cells). The spring:
+    sigma_rr(Ro) = -k_s u_r(Ro) makes u = A r + B / r with A, B from two linear equations (solved
+    here); k_s = 500 takes a third off the free inner displacement. L2 error against it at P2's
+    rate (levels 1 -> 2: >= 2.7), the inner displacement within 0.5 %, the normal-only spring
+    within 2 % of the full one (the exact field is radial). The damper: one backward-Euler step
+    from rest (rho ~ 0) gives c_s d / dt, the spring k_s = c_s / dt, to round-off; BDF2's first
+    step 3 c_s d / (2 dt)."""
+    E, nu, Ri, Ro, ks = 1000.0, 0.3, 1.0, 2.0, 500.0
+    mu, lam = E / (2 * (1 + nu)), E * nu / ((1 + nu) * (1 - 2 * nu))
+    a11, a12, a21, a22 = 2 * (lam + mu), -2 * mu / Ri**2, 2 * (lam + mu) + ks * Ro, -2 * mu / Ro**2 + ks / Ro
+    det = a11 * a22 - a12 * a21
+    A, B = -a22 / det, a21 / det
+    base = ["-options_file", os.path.join(MESHES, "..", "scenes", "lame_cylinder.opts"), "-structure_support_group", "outer"]
+    mesh = lambda k: os.path.join(MESHES, f"quarter_cylinder_L{k}_o2.msh")
+    r = [solve(*base, "-mesh", mesh(k), "-structure_support", ks) for k in (1, 2)]
+    e = [x["l2_relative"] for x in r]
+    print("spring: relative L2 errors", e, "rate", rates_h(e, [mesh(1), mesh(2)]), "inner u", r[1]["dmax"], "exact", A * Ri + B / Ri, "free", lame_radial(Ri, E, nu, 1, Ri, Ro))
+    between(rates_h(e, [mesh(1), mesh(2)])[0], 2.7, 3.6, "L2 rate with the spring, levels 1 -> 2")
+    assert e[1] < 2e-4, e
+    between(r[1]["dmax"] / (A * Ri + B / Ri), 0.995, 1.005, "inner displacement / Lame's with the spring")
+    between((A * Ri + B / Ri) / lame_radial(Ri, E, nu, 1, Ri, Ro), 0.5, 0.8, "closed forms: held / free inner displacement")
+    normal = solve(*base, "-mesh", mesh(1), "-structure_support", ks, "-structure_support_normal")
+    between(normal["l2_relative"] / e[0], 0.98, 1.02, "normal-only / full spring error")
+    for scheme, c in (("backward_euler", ks), ("bdf2", ks / 1.5)):
+        damped = solve(*base, "-mesh", mesh(1), "-structure_support", f"0,{c}", "-dt", 1, "-t_final", 1, "-time_scheme", scheme, "-structure_density", 1e-12)
+        between(damped["results"]["displacement_norm"] / r[0]["results"]["displacement_norm"], 1 - 1e-9, 1 + 1e-9, f"{scheme}: damper's first step / spring c_0 c_s / dt")
+
+@case
 def structure_lame_curved():
     """The same cylinder on second-order meshes (gmsh -order 2: the same vertices, edge nodes on
     the cylinders): curved (isoparametric P2) cells give P2's rates 3 in L2 and 2 in H1, measured

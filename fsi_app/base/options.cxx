@@ -123,6 +123,9 @@ PetscErrorCode OptionReader::Reals(const char *name, const char *text, PetscReal
 
   PetscFunctionBegin;
   PetscCall(Given(name, what.c_str(), value, &given));
+  /* PETSc reads the first max values and drops the rest without a word */
+  const PetscInt count = given ? (PetscInt)std::count(value.begin(), value.end(), ',') + 1 : 0;
+  PetscCheck(count <= max, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s %s: give at most %" PetscInt_FMT " values (got %" PetscInt_FMT ")", name, value.c_str(), max, count);
   if (given) PetscCall(PetscOptionsGetRealArray(PetscOptionsObject->options, PetscOptionsObject->prefix, name, v, n, nullptr));
   if (given) PetscCall(Check(name, v, *n, r));
   PetscCall(Help(name, List(v, given ? *n : max), def, text, what));

@@ -65,6 +65,40 @@ static void PressureTangent(const StructureForms &sb, const CellFace &f, const P
   }
 }
 
+/* The tissue support on face f: + int (k_s d + c_s d_t) . v dA on the reference face (or only
+   the components along its unit normal). s holds k_s d + c_s d_t at the cell's nodes; with
+   s = 0 and kappa = k_s + c_s c_0 / dt it adds the tangent kappa int N_a N_b (I or n n^T). */
+static void SupportTerms(const StructureForms &sb, const CellFace &f, const PetscReal s[30], PetscReal kappa, PetscReal re[30], PetscReal K[900])
+{
+  const CellGeometry &g = sb.cells.geom[f.k];
+  const PetscReal     zero[30] = {0};
+  for (PetscInt q = 0; q < sb.faceRule.nq; q++) {
+    PetscReal N[10], dN[10][3], ts[3], tt[3], nda[3], P[9];
+    FacePoint(sb, g, f, zero, q, N, dN, ts, tt); /* the reference face, also for a follower load */
+    Cross(ts, tt, nda);
+    const PetscReal da = PetscSqrtReal(nda[0] * nda[0] + nda[1] * nda[1] + nda[2] * nda[2]), w = sb.faceRule.w[q] * da;
+    for (int i = 0; i < 3; i++)
+      for (int k = 0; k < 3; k++) P[i * 3 + k] = sb.supportNormal ? nda[i] * nda[k] / (da * da) : (PetscReal)(i == k);
+    PetscReal sq[3] = {0, 0, 0}, Psq[3];
+    for (int b = 0; b < 10; b++)
+      for (int k = 0; k < 3; k++) sq[k] += N[b] * s[3 * b + k];
+    for (int i = 0; i < 3; i++) Psq[i] = P[i * 3] * sq[0] + P[i * 3 + 1] * sq[1] + P[i * 3 + 2] * sq[2];
+    for (int a = 0; a < 10; a++)
+      for (int i = 0; i < 3; i++) {
+        re[3 * a + i] += w * N[a] * Psq[i];
+        if (kappa != 0)
+          for (int b = 0; b < 10; b++)
+            for (int k = 0; k < 3; k++) K[(3 * a + i) * 30 + 3 * b + k] += w * kappa * N[a] * N[b] * P[i * 3 + k];
+      }
+  }
+}
+
+/* The damper's coefficient c_0 / dt of d^(n+1) in d_t (0 in statics: no past states). */
+static PetscReal DamperRate(const StructureForms &sb)
+{
+  return sb.history && !sb.history->past.empty() ? sb.history->first[0] / sb.history->dt : 0.0;
+}
+
 /* The law's parameters at reference point X: the fibre directions of the arterial wall. */
 static void PointParameters(const StructureForms &sb, const PetscReal X[3], PetscReal p[MATERIAL_MAX_PARAM])
 {
@@ -174,6 +208,21 @@ PetscErrorCode StructureResidual(StructureForms &sb, const PetscScalar *x, Petsc
       PressureResidual(sb, face, de, re);
       Scatter(sb.cells, face.k, re, f);
     }
+  if (sb.spring != 0 || sb.damper != 0) {
+    const PetscReal rate = DamperRate(sb);
+    if (rate && past.empty()) PetscCall(TimeHistoryGetPast(sb.history, past));
+    for (const CellFace &face : sb.supported) {
+      PetscReal de[30], s[30], y[30], re[30] = {0};
+      Gather(sb.cells, face.k, x, de);
+      for (int i = 0; i < 30; i++) s[i] = (sb.spring + sb.damper * rate) * de[i];
+      for (size_t j = 0; rate && j < past.size() && sb.history->first[j + 1] != 0; j++) {
+        Gather(sb.cells, face.k, past[j], y);
+        for (int i = 0; i < 30; i++) s[i] += sb.damper * sb.history->first[j + 1] / sb.history->dt * y[i];
+      }
+      SupportTerms(sb, face, s, 0, re, nullptr);
+      Scatter(sb.cells, face.k, re, f);
+    }
+  }
   PetscCall(TimeHistoryRestorePast(sb.history, past));
   sb.inverted = inverted;
   if (inverted) PetscCall(PetscInfo(sb.snes, "%" PetscInt_FMT " quadrature points with det F <= 0: the step is outside the domain of the law\n", inverted));
@@ -223,10 +272,16 @@ PetscErrorCode StructureJacobian(const StructureForms &sb, const PetscScalar *x,
       PressureTangent(sb, face, de, K);
       PetscCall(MatSetValues(P, 30, &sb.cells.global[30 * face.k], 30, &sb.cells.global[30 * face.k], K, ADD_VALUES));
     }
+  if (sb.spring != 0 || sb.damper != 0)
+    for (const CellFace &face : sb.supported) {
+      PetscReal s[30] = {0}, re[30] = {0}, K[900] = {0};
+      SupportTerms(sb, face, s, sb.spring + sb.damper * DamperRate(sb), re, K);
+      PetscCall(MatSetValues(P, 30, &sb.cells.global[30 * face.k], 30, &sb.cells.global[30 * face.k], K, ADD_VALUES));
+    }
   PetscFunctionReturn(0);
 }
 
-/* (the follower load's faces add to their cell's entries) */
+/* (the follower load's and the support's faces add to their cell's entries) */
 void StructureCouplings(const StructureForms &sb, Sparsity &s)
 {
   for (PetscInt k = 0; k < sb.cells.Size(); k++) s.Couple(30, &sb.cells.global[30 * k], 30, &sb.cells.global[30 * k]);

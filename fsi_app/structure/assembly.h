@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-2-Clause
 /* The structure block's residual and Jacobian, assembled cell by cell with the P2 element of
    discretization/p2tet.h: R(d) = int rho d_tt . v + int P(F) : grad v - int b . v
-   + int_faces p n . v, with d_tt the fully implicit difference of core/time_history.h and
-   n the normal of the reference face (dead pressure) or of the deformed one (follower). */
+   + int_faces p n . v + int_support (k_s d + c_s d_t) . v, with d_t, d_tt the fully implicit
+   differences of core/time_history.h and n the normal of the reference face (dead pressure) or
+   of the deformed one (follower). The support is the surrounding tissue (a spring and a damper
+   per unit reference area, Moireau et al. 2012), on every component or on the reference normal's. */
 #pragma once
 
 #include "discretization/cells.h"
@@ -34,6 +36,9 @@ struct StructureForms {
   PetscReal          bodyForce[3] = {0, 0, 0};   /* per unit reference volume */
   PetscReal          traction[3]  = {0, 0, 0};   /* dead, per unit reference area, on tractionFaces */
   std::vector<CellFace> tractionFaces;
+  PetscReal          spring = 0, damper = 0;     /* k_s, c_s of the tissue support */
+  PetscBool          supportNormal = PETSC_FALSE; /* the support acts on d . n only */
+  std::vector<CellFace> supported;                 /* faces of -structure_support_group */
   PetscReal          rho      = 0;               /* density: inertia when history has past states */
   const TimeHistory *history  = nullptr;
   PetscInt           inverted = 0;               /* quadrature points with det F <= 0 in the last residual */

@@ -35,6 +35,12 @@ PetscErrorCode StructureBlock::ReadOptions(std::map<std::string, std::string> &p
   PetscCheck(!set || n == 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_traction: give tx,ty,tz (got %" PetscInt_FMT " values)", n);
   PetscCall(r.String("-structure_traction_group", "group of faces the traction acts on", o.tractionGroup, sizeof(o.tractionGroup), PROBLEM));
   PetscCheck(!(o.traction[0] != 0 || o.traction[1] != 0 || o.traction[2] != 0) || o.tractionGroup[0], PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_traction: name the faces it acts on with -structure_traction_group");
+  n = 2;
+  PetscCall(r.Reals("-structure_support", "tissue support k_s[,c_s] on -structure_support_group: a spring (dyn/cm^3) and a damper (dyn s/cm^3) per unit reference area", o.support, &n, &set, NonNegative, PROBLEM));
+  PetscCheck(!set || n == 1 || n == 2, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-structure_support: give k_s or k_s,c_s (got %" PetscInt_FMT " values)", n);
+  if (set && n == 1) o.support[1] = 0;
+  PetscCall(r.String("-structure_support_group", "group of faces the tissue support holds", o.supportGroup, sizeof(o.supportGroup), PROBLEM));
+  PetscCall(r.Bool("-structure_support_normal", "the support acts only on the displacement along the reference normal (the wall slides freely along the tissue)", &o.supportNormal, PROBLEM));
   PetscCall(r.Real("-structure_pressure_ramp", "the pressure rises smoothly (sin^2) from 0 over this time (s); 0: a step at t = 0", &o.ramp, NonNegative, PROBLEM));
   PetscCall(r.Real("-structure_pressure_until", "the pressure acts while t <= this (s); 0: always", &o.pulseEnd, NonNegative, PROBLEM));
   PetscCall(r.Enum("-structure_material", "constitutive law of the wall", MaterialNames, &o.material, PROBLEM));
@@ -72,6 +78,7 @@ void StructureBlock::Groups(std::vector<GroupUse> &groups) const
   for (const auto &g : SplitList(opt.clamp)) groups.push_back({g.substr(0, g.find(':')), "-structure_clamp", 2});
   for (const auto &g : SplitList(opt.tractionGroup)) groups.push_back({g, "-structure_traction_group", 2});
   if (opt.pressure != 0) groups.push_back({opt.loaded, "-structure_pressure_group", 2});
+  if (Supported()) groups.push_back({opt.supportGroup, "-structure_support_group", 2});
 }
 
 PetscErrorCode StructureBlock::AddFields(DM dm)
@@ -136,6 +143,12 @@ PetscErrorCode StructureBlock::SetUp(DM dm)
     PetscCall(DMGetLabel(dm, opt.tractionGroup, &group));
     PetscCall(CellFacesCreate(dm, sb.cells, group, sb.tractionFaces));
   }
+  if (Supported()) {
+    DMLabel group;
+    PetscCall(DMGetLabel(dm, opt.supportGroup, &group));
+    PetscCall(CellFacesCreate(dm, sb.cells, group, sb.supported));
+    sb.spring = opt.support[0], sb.damper = opt.support[1], sb.supportNormal = opt.supportNormal;
+  }
   for (int d = 0; d < 3; d++) sb.bodyForce[d] = opt.bodyForce[d], sb.traction[d] = opt.traction[d];
   if (!opt.probes.empty()) PetscCall(ProbesCreate(PetscObjectComm((PetscObject)dm), sb.cells, opt.probes, "-structure_probes", probes));
   PetscFunctionReturn(0);
@@ -179,7 +192,7 @@ PetscErrorCode StructureBlock::AfterStep(DM dm, PetscInt, PetscReal t, Vec x)
 PetscErrorCode StructureBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
 {
   Errors e;
-  Lame   lame = LameCylinder(opt.E, opt.nu, opt.pressure, opt.lameRadii[0], opt.lameRadii[1]);
+  Lame   lame = LameCylinder(opt.E, opt.nu, opt.pressure, opt.lameRadii[0], opt.lameRadii[1], opt.support[0]);
 
   PetscFunctionBegin;
   if (!probes.cell.empty()) report.series.push_back({"displacement", &probes});

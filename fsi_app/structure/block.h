@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 /* The structure block: the wall's displacement d_s (P2) on its region, its material, loads and
-   clamps, its rows R_s(d_s) (structure/assembly.h), GDSW's element subdomains and rigid-body
-   modes, and its verification (Lame's cylinder, the manufactured solution). */
+   clamps, the tissue support, its rows R_s(d_s) (structure/assembly.h), GDSW's element subdomains and rigid-body
+   modes, and its verification (Lame's cylinder, free or held by a spring; the manufactured solution). */
 #pragma once
 
 #include "core/scene.h"
@@ -22,6 +22,9 @@ struct StructureOptions {
   PetscReal bodyForce[3] = {0, 0, 0};         /* per unit reference volume (dyn/cm^3) */
   PetscReal traction[3]  = {0, 0, 0};         /* dead traction per unit reference area (dyn/cm^2) */
   char      tractionGroup[64] = "";
+  PetscReal support[2] = {0, 0};          /* k_s, c_s of the tissue support */
+  char      supportGroup[64] = "outer_wall";
+  PetscBool supportNormal = PETSC_FALSE;  /* on d . n only */
   PetscReal pulseEnd   = 0;   /* the pressure acts for t <= pulseEnd (0: always) */
   PetscReal ramp       = 0;   /* the pressure rises as sin^2(pi t / 2 ramp) until t = ramp (0: at once) */
   Material  material   = LINEAR_ELASTIC;
@@ -81,6 +84,7 @@ private:
   /* The factor of every load (pressure, traction, body force) at time t (dynamics: the pulse
      and its ramp) or load fraction t (statics). */
   PetscReal LoadFactor(PetscReal t) const;
+  bool      Supported() const { return opt.support[0] > 0 || opt.support[1] > 0; }
 };
 
 } // namespace fsi

@@ -47,10 +47,13 @@ void MMSElasticitySolution(const PetscReal x[3], PetscReal, const void *ctx, Pet
   u[0] = u[1] = u[2] = a * PetscSinReal(PETSC_PI * x[0]) * PetscSinReal(PETSC_PI * x[1]) * PetscSinReal(PETSC_PI * x[2]);
 }
 
-Lame LameCylinder(PetscReal E, PetscReal nu, PetscReal p, PetscReal Ri, PetscReal Ro)
+/* sigma_rr(Ri) = -p and sigma_rr(Ro) + k u_r(Ro) = 0: two equations for A, B (Cramer) */
+Lame LameCylinder(PetscReal E, PetscReal nu, PetscReal p, PetscReal Ri, PetscReal Ro, PetscReal k)
 {
-  const PetscReal c = (1 + nu) * p * Ri * Ri / (E * (Ro * Ro - Ri * Ri));
-  return {c * (1 - 2 * nu), c * Ro * Ro};
+  const PetscReal mu = E / (2 * (1 + nu)), lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+  const PetscReal a11 = 2 * (lambda + mu), a12 = -2 * mu / (Ri * Ri), a21 = 2 * (lambda + mu) + k * Ro, a22 = -2 * mu / (Ro * Ro) + k / Ro;
+  const PetscReal det = a11 * a22 - a12 * a21;
+  return {-p * a22 / det, p * a21 / det};
 }
 
 /* u = (A + B / r^2)(x, y, 0) */

@@ -18,12 +18,14 @@ void MMSElasticityDerivatives(const PetscReal x[3], PetscReal a, PetscReal G[9],
    A: b_i = -sum_jkl A_ijkl d2 d_k / dx_j dx_l. */
 void MMSBodyForce(const PetscReal x[3], PetscReal a, void (*tangent)(const PetscReal[9], const PetscReal *, PetscReal[81]), const PetscReal *param, PetscReal b[3]);
 
-/* Lame's thick-walled cylinder (axis z) under internal pressure p, plane strain:
-   u = (A r + B / r) e_r with A = (1+nu)(1-2nu) p Ri^2 / (E (Ro^2 - Ri^2)), B = (1+nu) p Ri^2 Ro^2 / (E (Ro^2 - Ri^2)). */
+/* Lame's thick-walled cylinder (axis z) under internal pressure p, plane strain, its outer
+   surface held by a spring k (sigma_rr(Ro) = -k u_r(Ro); k = 0: free): u = (A r + B / r) e_r with
+   sigma_rr = 2 (lambda + mu) A - 2 mu B / r^2. Free: A = (1+nu)(1-2nu) p Ri^2 / (E (Ro^2 - Ri^2)),
+   B = (1+nu) p Ri^2 Ro^2 / (E (Ro^2 - Ri^2)). */
 struct Lame {
   PetscReal A, B;
 };
-Lame LameCylinder(PetscReal E, PetscReal nu, PetscReal p, PetscReal Ri, PetscReal Ro);
+Lame LameCylinder(PetscReal E, PetscReal nu, PetscReal p, PetscReal Ri, PetscReal Ro, PetscReal k = 0);
 
 /* Hagen-Poiseuille flow along z in a tube of radius R, length L: u_z = G (R^2 - r^2) / (4 mu),
    p = dp (1 - z / L), G = dp / L; flux pi R^4 dp / (8 mu L). */
