@@ -396,7 +396,7 @@ def checkpoint_header_tampered():
     run(dyn + ["-t_final", 0.2, "-checkpoint", chk])
     data = open(chk, "rb").read()
     time = bytearray(data)
-    time[7 * 4 + 3] ^= 0x01  # the stored time t: the first real after the seven integers of the header
+    time[8 * 4 + 3] ^= 0x01  # the stored time t: the first real after the eight integers of the header
     open(os.path.join(tmp, "time.chk"), "wb").write(time)
     k = data.index(b"-structure_density 1\n")
     option = data[:k] + b"-structure_density 2\n" + data[k + len(b"-structure_density 1\n"):]

@@ -18,7 +18,9 @@ def fluid_poiseuille():
     scenes/fluid_schur.opts, and SIMPLE (scenes/fluid_simple.opts), give MUMPS's solution; the flux and velocity errors against the
     exact flow fall at rate 2 from tube1_L0 to tube1_L1 (the straight-sided tetrahedra's
     polygonal cross-section: the discretisation itself is exact for the quadratic profile only
-    on an exact geometry); 2 ranks give the flux of 1."""
+    on an exact geometry), and so does the wall shear stress's against R dp / (2L) (measured
+    1.94: 7.8 % -> 2.0 %); its OSI is 0 (a steady flow); 2 ranks give the flux and the wall
+    shear stress of 1."""
     r = [flow(*POISEUILLE, "-mesh", os.path.join(MESHES, f"tube1_L{k}.msh"), "-snes_monitor") for k in (0, 1)]
     assert r[0]["unknowns"] == {"fluid": 2142, "pressure": 339}, r[0]
     assert r[1]["unknowns"]["fluid"] == 22974 and r[1]["unknowns"]["pressure"] == 1828, r[1]
@@ -35,7 +37,12 @@ def fluid_poiseuille():
     for key in ("flux_error", "l2_relative"):
         between(rates([x[key] for x in r])[0], 1.8, 2.4, f"{key} rate L0 -> L1")
     assert r[1]["flux_error"] < 0.035, r[1]
-    between(flow(*POISEUILLE, np=2)["flux"] / r[0]["flux"], 1 - 1e-6, 1 + 1e-6, "2 ranks / 1 rank flux")
+    two = flow(*POISEUILLE, np=2)
+    between(two["flux"] / r[0]["flux"], 1 - 1e-6, 1 + 1e-6, "2 ranks / 1 rank flux")
+    # the wall shear stress against R dp / (2L) = 4 mu Q / (pi R^3): the nodes of the ranks' seam sum both sides
+    between(rates([x["results"]["wss_relative_error"] for x in r])[0], 1.7, 2.4, "wall shear stress rate L0 -> L1")
+    between(two["results"]["wss_relative_error"] / r[0]["results"]["wss_relative_error"], 1 - 1e-6, 1 + 1e-6, "2 ranks / 1 rank wall shear stress error")
+    between(r[0]["results"]["osi_max"], 0, 1e-12, "OSI of a steady flow")
 
 
 @case
@@ -44,11 +51,16 @@ def fluid_poiseuille_curved():
     edge nodes on the cylinder): the parabolic profile is P2, so only the geometry's error was
     left, and it now falls faster than the straight cells' rate 2: velocity L2 rate >= 2.7
     (measured 3.35: 5.2e-3 -> 5.1e-4 relative, against 11.4 % -> 2.7 % straight), the flux error
-    below 1e-3 at L1 (7.8e-5, against 3.1 %)."""
+    below 1e-3 at L1 (7.8e-5, against 3.1 %). The wall shear stress against R dp / (2L) =
+    4 mu Q / (pi R^3): rate >= 2 (measured 3.69: 6.3 % -> 0.49 %), its mean over the wall at L1
+    within 0.2 % (0.013 %)."""
     r = [flow(*POISEUILLE, "-mesh", os.path.join(MESHES, f"tube1_L{k}_o2.msh")) for k in (0, 1)]
     assert r[0]["unknowns"] == {"fluid": 2142, "pressure": 339}, r[0]
     between(rates([x["l2_relative"] for x in r])[0], 2.7, 5, "velocity L2 rate L0 -> L1, curved cells")
     between(r[1]["flux_error"], 0, 1e-3, "relative flux error at L1, curved cells")
+    wss = [x["results"]["wss_relative_error"] for x in r]
+    between(rates(wss)[0], 2.0, 5, f"wall shear stress rate L0 -> L1, curved cells (errors {wss})")
+    between(r[1]["results"]["tawss_mean"] / (0.15 * 10 / (2 * 2.5)), 0.998, 1.002, "mean wall shear stress / R dp / (2L), L1 curved")
 
 
 @case
@@ -61,8 +73,9 @@ def fluid_pulse():
     3 ms pulse (Szymanski's flow superposed; measured 0.876 on tube1_L0, whose cells of 0.1 cm do
     not resolve the Stokes layer sqrt(nu t) = 0.01 cm: 0.95 on tube1_L1 at 2 ms). Newton
     converges in every step within 3 iterations, FGMRES with the fieldsplit preconditioner needs
-    at most 20 iterations per Newton step; the XDMF output has velocity and pressure in every
-    frame."""
+    at most 20 iterations per Newton step; the XDMF output has velocity, pressure and the wall
+    shear stress, its time average and OSI in every frame (the largest |wss| in the file is the
+    report's)."""
     tmp = tempfile.mkdtemp()
     p_in, L, axis = 1330, 2.5, [0, 0.625, 1.25, 1.875, 2.5]
     r = scene("-options_file", os.path.join(SCENES, "fluid_tube1_pulse.opts"), "-mesh", os.path.join(MESHES, "tube1_L0.msh"),
@@ -82,6 +95,15 @@ def fluid_pulse():
     listing = subprocess_out(["h5ls", "-r", os.path.join(tmp, "flow.h5")])
     assert len(re.findall(r"/fields/velocity_\d+ +Dataset \{1894, 3\}", listing)) == 9, listing
     assert len(re.findall(r"/fields/pressure_\d+ +Dataset \{1894\}", listing)) == 9, listing
+    for name, shape in (("wss", "1894, 3"), ("tawss", "1894"), ("osi", "1894")):
+        assert len(re.findall(rf"/fields/{name}_\d+ +Dataset \{{{shape}\}}", listing)) == 9, (name, listing)
+    # the last frame's wall shear stress is the report's: nonzero only at the wall's nodes
+    dump = subprocess_out(["h5dump", "-y", "-w", "0", "-m", "%.17g", "-d", "/fields/wss_8", os.path.join(tmp, "flow.h5")]).split("DATA {")[1]
+    values = [float(v) for v in re.findall(r"-?\d+(?:\.\d+)?(?:e[-+]\d+)?", dump)]
+    assert len(values) == 3 * 1894, len(values)
+    tau = [math.sqrt(sum(v * v for v in values[3 * k:3 * k + 3])) for k in range(1894)]
+    between(max(tau) / r["results"]["wss_max"], 1 - 1e-10, 1 + 1e-10, "largest |wss| in the file / the report's")
+    assert 0 < sum(t > 0 for t in tau) < 1894, sum(t > 0 for t in tau)  # zero inside the fluid
     shutil.rmtree(tmp)
 
 

@@ -110,6 +110,9 @@ public:
   /* Why the last residual had no value (an inverted cell), "" if it had. */
   virtual std::string InvertedCause() const { return ""; }
   virtual PetscErrorCode AfterStep(DM dm, PetscInt step, PetscReal t, Vec x) { return 0; }
+  /* Sums over the steps that its output carries on (this rank's part; a time average, say):
+     a checkpoint keeps them, a restart continues from them. nullptr: none. */
+  virtual std::vector<PetscReal> *RunningSums() { return nullptr; }
   virtual PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) { return 0; }
 };
 

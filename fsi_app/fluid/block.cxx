@@ -46,6 +46,13 @@ PetscErrorCode FluidBlock::Wire(const std::vector<Block *> &scene)
   return 0;
 }
 
+std::string FluidBlock::Walls() const
+{
+  std::string walls = opt.noslip;
+  if (coupled) walls += (walls.empty() ? "" : ",") + mesh->Group("interface");
+  return walls;
+}
+
 std::string FluidBlock::Group(const std::string &role) const
 {
   return role == "region" ? opt.region : role == "noslip" ? opt.noslip : role == "inlet" ? opt.inlet : role == "outlet" ? opt.outlet : "";
@@ -83,6 +90,7 @@ PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &probl
   PetscCall(r.String("-fluid_inlet", "group of the inflow faces", o.inlet, sizeof(o.inlet), PROBLEM));
   PetscCall(r.String("-fluid_outlet", "groups of the outflow faces, comma separated, each an outlet: traction-free, or a 0D model of the outlets block", o.outlet, sizeof(o.outlet), PROBLEM));
   PetscCall(r.Real("-fluid_backflow_stabilization", "beta of the backflow term -beta rho (u.n)_- u.v on the outlets (Esmaily Moghadam et al. 2011): damps fluid re-entering through them; 0 turns it off", &o.backflow, {0, 1}, PROBLEM));
+  PetscCall(r.Real("-fluid_wall_shear_from", "the wall shear stress's time average (tawss) and oscillatory shear index (osi) in the output are taken over [this time, t] (s)", &o.shearFrom, NonNegative, RUN));
   PetscCall(r.Bool("-fluid_shape_derivatives", "on a moving mesh, the fluid's Jacobian holds its derivative in the mesh displacement (exact Newton); false: quasi-Newton", &o.shapeDerivatives, RUN));
   n = 3;
   PetscBool set;
@@ -235,6 +243,7 @@ PetscErrorCode FluidBlock::SetUp(DM dm)
   if (inflow.flow.period > 0) PetscCall(InflowProfileSetUp(dm, fb.velocity, opt.inlet, inflow));
   if (opt.womersley) exact.SetUp(inflow.flow.Harmonics((PetscInt)inflow.womersley.c.size() - 1), inflow.flow.period, inflow.radius, opt.rho, opt.mu);
   if (!opt.probes.empty()) PetscCall(ProbesCreate(PetscObjectComm((PetscObject)dm), fb.pressure, opt.probes, "-fluid_probes", probes));
+  PetscCall(WallShearSetUp(dm, fb, Walls(), opt.shearFrom, shear));
   if (sc.mms) {
     const FlowMMS *m = &flow;
     for (const auto &g : outlets) PetscCall(addTraction(g.c_str(), [m](const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal tr[3]) { FlowMMSTraction(*m, x, n, t, tr); }));
@@ -294,8 +303,9 @@ PetscErrorCode FluidBlock::InitialState(DM dm, Vec x, PetscBool *set)
 
 void FluidBlock::Output(std::vector<OutputPart> &parts) const
 {
-  OutputPart p{"fluid", &forms.velocity, {{"velocity", velocity}, {"pressure", pressure}}};
+  OutputPart p{"fluid", &forms.velocity, {{"velocity", velocity}, {"pressure", pressure}}, {}};
   if (mesh) p.fields.push_back({"displacement", mesh->Field("geometry")}); /* the mesh's: named as the wall's, so Warp By Vector moves both parts */
+  if (!Walls().empty()) p.derived = {{"wss", 3, &shear.tau}, {"tawss", 1, &shear.tawss}, {"osi", 1, &shear.osi}}; /* nonzero on the walls, as svMultiPhysics writes them */
   parts.push_back(p);
 }
 
@@ -308,15 +318,56 @@ std::string FluidBlock::InvertedCause() const
   return cause;
 }
 
+/* Womersley's wall shear stress -mu W_r(R, t) along the axis. */
+struct WomersleyWall {
+  const Womersley     *w;
+  const InflowProfile *inlet;
+  PetscReal            mu;
+};
+static void WomersleyShear(const PetscReal *, PetscReal t, const void *ctx, PetscReal tau[3])
+{
+  const WomersleyWall *b = (const WomersleyWall *)ctx;
+  const PetscReal      s = -b->mu * b->w->RadialDerivative(b->inlet->radius, t);
+  for (int i = 0; i < 3; i++) tau[i] = s * b->inlet->normal[i];
+}
+
+/* Poiseuille's R dp / (2 L) along z, at the wall r = R. */
+static void PoiseuilleShear(const PetscReal *, PetscReal, const void *ctx, PetscReal tau[3])
+{
+  const Poiseuille &f = *(const Poiseuille *)ctx;
+  tau[0] = tau[1] = 0, tau[2] = f.R * f.dp / (2 * f.L);
+}
+
+/* The wall shear stress at time t from the global state x. */
+static PetscErrorCode ComputeShear(DM dm, const FluidForms &fb, Vec x, PetscReal t, PetscReal dt, WallShear &w)
+{
+  Vec                xl;
+  const PetscScalar *a;
+
+  PetscFunctionBegin;
+  PetscCall(DMGetLocalVector(dm, &xl));
+  PetscCall(DMGlobalToLocal(dm, x, INSERT_VALUES, xl));
+  PetscCall(InsertEssentialValues(dm, t, xl));
+  PetscCall(VecGetArrayRead(xl, &a));
+  PetscCall(WallShearCompute(dm, fb, a, t, dt, w));
+  PetscCall(VecRestoreArrayRead(xl, &a));
+  PetscCall(DMRestoreLocalVector(dm, &xl));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode FluidBlock::AfterStep(DM dm, PetscInt, PetscReal t, Vec x)
 {
   PetscFunctionBegin;
+  PetscCall(ComputeShear(dm, forms, x, t, sc.Dynamic() ? sc.dt : 1.0 / sc.Steps(), shear));
   if (opt.womersley) {
     const std::pair<const Womersley *, const InflowProfile *> ctx(&exact, &inflow);
-    Errors e, n;
+    Errors    e, n;
+    PetscReal se, sn;
     PetscCall(ComputeErrors(dm, forms.velocity, x, t, WomersleyExact, &ctx, e));
     PetscCall(ComputeErrors(dm, forms.velocity, x, t, ZeroSolution, nullptr, n));
-    womersleyErrors.insert(womersleyErrors.end(), {t, e.l2, n.l2});
+    const WomersleyWall wall = {&exact, &inflow, opt.mu};
+    PetscCall(WallShearError(dm, shear, WomersleyShear, &wall, t, &se, &sn));
+    womersleyErrors.insert(womersleyErrors.end(), {t, e.l2, n.l2, se, sn});
   }
   if (!probes.cell.empty()) PetscCall(ProbesRecordGlobal(dm, forms.pressure, x, t, probes));
   if (coupled) PetscCall(balance.Record(dm, forms, inletFaces, outletFaces, t, x));
@@ -384,11 +435,26 @@ PetscErrorCode FluidBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)
     PetscCall(ReportErrors("", e, report));
   }
   if (opt.womersley && !womersleyErrors.empty()) { /* over the last period: the largest error against the largest norm */
-    PetscReal e = 0, n = 0;
-    for (size_t k = 0; k < womersleyErrors.size(); k += 3)
-      if (womersleyErrors[k] >= t - inflow.flow.period * (1 - 1e-9)) e = PetscMax(e, womersleyErrors[k + 1]), n = PetscMax(n, womersleyErrors[k + 2]);
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Womersley's flow (R %.6e, alpha %.4g): velocity L2 error over the last period %.6e, relative %.6e\n", (double)inflow.radius, (double)(inflow.radius * PetscSqrtReal(2 * PETSC_PI / inflow.flow.period * opt.rho / opt.mu)), (double)e, (double)(e / n)));
-    report.results.insert(report.results.end(), {{"womersley_l2", e}, {"womersley_l2_relative", e / n}});
+    PetscReal e = 0, n = 0, se = 0, sn = 0;
+    for (size_t k = 0; k < womersleyErrors.size(); k += 5)
+      if (womersleyErrors[k] >= t - inflow.flow.period * (1 - 1e-9)) {
+        e = PetscMax(e, womersleyErrors[k + 1]), n = PetscMax(n, womersleyErrors[k + 2]);
+        se = PetscMax(se, womersleyErrors[k + 3]), sn = PetscMax(sn, womersleyErrors[k + 4]);
+      }
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Womersley's flow (R %.6e, alpha %.4g): velocity L2 error over the last period %.6e, relative %.6e; wall shear stress relative %.6e\n", (double)inflow.radius, (double)(inflow.radius * PetscSqrtReal(2 * PETSC_PI / inflow.flow.period * opt.rho / opt.mu)), (double)e, (double)(e / n), (double)(se / sn)));
+    report.results.insert(report.results.end(), {{"womersley_l2", e}, {"womersley_l2_relative", e / n}, {"womersley_wss_relative", se / sn}});
+  }
+  if (!Walls().empty()) {
+    WallShearSummary w;
+    PetscCall(WallShearSummarize(dm, shear, w));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wall shear stress: largest %.6e, time average (mean over the wall) %.6e, OSI %.6e to %.6e (averages from t = %g)\n", (double)w.maxTau, (double)w.meanTawss, (double)w.minOsi, (double)w.maxOsi, (double)opt.shearFrom));
+    report.results.insert(report.results.end(), {{"wss_max", w.maxTau}, {"tawss_mean", w.meanTawss}, {"osi_min", w.minOsi}, {"osi_max", w.maxOsi}});
+    if (p.R > 0) {
+      PetscReal se, sn;
+      PetscCall(WallShearError(dm, shear, PoiseuilleShear, &p, t, &se, &sn));
+      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wall shear stress against R dp / 2L = %.6e: relative error %.6e\n", (double)(p.R * p.dp / (2 * p.L)), (double)(se / sn)));
+      report.results.push_back({"wss_relative_error", se / sn});
+    }
   }
   if (coupled) PetscCall(balance.Report(dm, forms, report));
   if (!probes.cell.empty()) report.series.push_back({"pressure", &probes});

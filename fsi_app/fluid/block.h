@@ -4,13 +4,15 @@
    groups, inflow velocity or traction, its outlets (traction-free, or the outlets block's 0D
    models) with backflow damped, and the exact data of the verification flows
    (Poiseuille, the manufactured flows of verification/mms.h); it reports the fluxes through
-   the inlet and outlet, the errors of the verification flows, and on a mesh moved by a
+   the inlet and outlet, the wall shear stress, its time average and oscillatory index
+   (fluid/wall_shear.h), the errors of the verification flows, and on a mesh moved by a
    coupled wall its volume balance (fluid/balance.h). */
 #pragma once
 
 #include "fluid/assembly.h"
 #include "fluid/balance.h"
 #include "fluid/inflow.h"
+#include "fluid/wall_shear.h"
 #include "base/waveform.h"
 #include "discretization/probes.h"
 #include "verification/mms.h"
@@ -45,6 +47,7 @@ struct FluidOptions {
   PetscReal backflow = 0.2;                /* beta of the backflow term on the outlets */
   PetscBool shapeDerivatives = PETSC_TRUE; /* on a moving mesh the Jacobian holds D_{d_f} R (exact Newton) */
   std::vector<PetscReal> probes;           /* points (3 each) where the pressure is recorded */
+  PetscReal   shearFrom = 0;               /* the wall shear stress's time average and OSI from this time */
   PetscReal   poiseuille[3] = {0, 0, 0};   /* verification: R, L, pressure drop */
   FlowMMSKind mmsFlow = FLOW_MMS_TRIGONOMETRIC;
   PetscReal   mmsRamp = 0;
@@ -81,6 +84,7 @@ public:
   PetscBool      Summary(Headline *h) const override { return *h = {"velocity", velocity, "solution_norm", PETSC_TRUE}, PETSC_TRUE; }
   std::string    InvertedCause() const override;
   PetscErrorCode AfterStep(DM dm, PetscInt step, PetscReal t, Vec x) override;
+  std::vector<PetscReal> *RunningSums() override { return Walls().empty() ? nullptr : &shear.sums; }
   PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) override;
 
 private:
@@ -98,7 +102,10 @@ private:
   Waveform              inletPressure;          /* p(t) of -fluid_inlet_pressure_waveform or _fourier (period 0: neither) */
   InflowProfile         inflow;                 /* the flow rate Q(t) of -fluid_inflow_waveform or _fourier (period 0: neither) */
   Womersley             exact;                  /* -womersley: the exact flow */
-  std::vector<PetscReal> womersleyErrors;       /* -womersley: per step t, the velocity's L2 error, the exact flow's L2 norm */
+  std::vector<PetscReal> womersleyErrors;       /* -womersley: per step t, the velocity's and the WSS's errors and the exact norms */
+  WallShear             shear;                  /* on the no-slip faces and the interface */
+
+  std::string Walls() const;                    /* the groups of the wall shear stress */
 };
 
 } // namespace fsi

@@ -92,7 +92,7 @@ PetscErrorCode GeometryBlock::Predict(PetscReal t, Vec x)
 
 void GeometryBlock::Output(std::vector<OutputPart> &parts) const
 {
-  if (!movesFluid) parts.push_back({"fluid", &forms.cells, {{"displacement", field}}}); /* else the fluid's part shows it */
+  if (!movesFluid) parts.push_back({"fluid", &forms.cells, {{"displacement", field}}, {}}); /* else the fluid's part shows it */
 }
 
 PetscErrorCode GeometryBlock::Results(DM dm, Vec x, PetscReal t, RunReport &report)

@@ -108,7 +108,7 @@ static PetscErrorCode NumberNodes(DM dm, XdmfPart &s)
   PetscCall(PetscSFBcastBegin(sf, MPIU_INT, sent.data(), s.node.data(), MPI_REPLACE));
   PetscCall(PetscSFBcastEnd(sf, MPIU_INT, sent.data(), s.node.data(), MPI_REPLACE));
   for (XdmfField &f : s.fields) {
-    PetscCall(PetscSectionGetFieldComponents(local, f.field, &f.nc));
+    if (!f.point) PetscCall(PetscSectionGetFieldComponents(local, f.field, &f.nc));
     PetscCall(VecCreateMPI(comm, f.nc * owned, PETSC_DETERMINE, &f.values));
     PetscCall(VecSetBlockSize(f.values, f.nc));
   }
@@ -169,6 +169,7 @@ PetscErrorCode XdmfOpen(const char *file, DM dm, const std::vector<OutputPart> &
     IS       topology;
     p.name = op.name, p.group = parts.size() == 1 ? "" : "/" + op.name, p.cells = op.mesh;
     for (const auto &fl : op.fields) p.fields.push_back({fl.first, fl.second});
+    for (const PointField &d : op.derived) p.fields.push_back({d.name, -1, d.nc, nullptr, d.values});
     PetscCall(NumberNodes(dm, p));
     PetscCall(MeshData(dm, p, &coords, &topology));
     if (viewer) {
@@ -231,7 +232,11 @@ PetscErrorCode XdmfWriteFrame(XdmfSeries &s, PetscReal t, Vec x)
       PetscScalar *va;
       PetscCall(VecGetOwnershipRange(f.values, &rStart, nullptr));
       PetscCall(VecGetArray(f.values, &va));
-      PetscCall(ForEachNode(part, [&](PetscInt p, PetscInt node, PetscBool own) { return own ? NodeValues(s.dm, local, f, xa, p, &va[f.nc * node - rStart]) : 0; }));
+      PetscCall(ForEachNode(part, [&](PetscInt p, PetscInt node, PetscBool own) -> PetscErrorCode {
+        if (own && f.point)
+          for (PetscInt c = 0; c < f.nc; c++) va[f.nc * node - rStart + c] = (*f.point)[f.nc * p + c];
+        return own && !f.point ? NodeValues(s.dm, local, f, xa, p, &va[f.nc * node - rStart]) : 0;
+      }));
       PetscCall(VecRestoreArray(f.values, &va));
       PetscCall(PetscSNPrintf(dataset, sizeof(dataset), "%s_%zu", f.name.c_str(), s.times.size()));
       PetscCall(PetscObjectSetName((PetscObject)f.values, dataset));

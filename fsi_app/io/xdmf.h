@@ -16,18 +16,28 @@
 
 namespace fsi {
 
+/* A quantity computed from the solution rather than solved for (the wall shear stress): nc
+   values per point of the DM's chart, zero where it has none, refreshed before each frame. */
+struct PointField {
+  std::string                   name;
+  PetscInt                      nc;
+  const std::vector<PetscReal> *values;
+};
+
 /* Fields written on the P2 cells of one region: one part of the XDMF output. */
 struct OutputPart {
   std::string                                   name; /* "fluid", "wall" */
   const FieldCells                             *mesh = nullptr;
   std::vector<std::pair<std::string, PetscInt>> fields;
+  std::vector<PointField>                       derived;
 };
 
 
 struct XdmfField {
-  std::string name;
-  PetscInt    field, nc = 0;
-  Vec         values = nullptr; /* nc per owned node */
+  std::string                   name;
+  PetscInt                      field, nc = 0;
+  Vec                           values = nullptr; /* nc per owned node */
+  const std::vector<PetscReal> *point  = nullptr; /* a PointField's values; field is then -1 */
 };
 
 struct XdmfPart {

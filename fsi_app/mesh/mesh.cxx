@@ -37,6 +37,21 @@ PetscErrorCode CountLabel(DM dm, const std::string &name, PetscInt depth, PetscI
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode OwnedPoints(DM dm, std::vector<char> &owned)
+{
+  PetscSF         sf;
+  PetscInt        pStart, pEnd, nleaves = 0;
+  const PetscInt *leaves = nullptr;
+
+  PetscFunctionBegin;
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  owned.assign(pEnd, 1);
+  PetscCall(DMGetPointSF(dm, &sf));
+  if (sf) PetscCall(PetscSFGetGraph(sf, nullptr, &nleaves, &leaves, nullptr));
+  for (PetscInt l = 0; l < nleaves; l++) owned[leaves ? leaves[l] : l] = 0;
+  PetscFunctionReturn(0);
+}
+
 /* The names of the labels that came from physical groups (for error messages). */
 static std::string GroupNames(DM dm)
 {

@@ -75,4 +75,7 @@ PetscErrorCode MarkBoundaryFaces(DM dm, const char *name);
 /* Global number of points of depth `depth` (3: cells, 2: faces, 0: vertices) in label `name`. */
 PetscErrorCode CountLabel(DM dm, const std::string &name, PetscInt depth, PetscInt *count);
 
+/* Per point of dm's chart: 1 if this rank owns it, 0 if it is a ghost (a leaf of the point SF). */
+PetscErrorCode OwnedPoints(DM dm, std::vector<char> &owned);
+
 } // namespace fsi

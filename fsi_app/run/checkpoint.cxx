@@ -11,13 +11,14 @@
 
 namespace fsi {
 
-static const PetscInt Magic = 0x46534934; /* "FSI4": with the problem's options, the header's and the states' checksums */
+static const PetscInt Magic = 0x46534935; /* "FSI5": with the problem's options, the header's and the states' checksums, the running sums */
 
-/* header: magic, step, ranks, global size, scheme, past states, length of the problem's text;
-   then t, dt; the checksums of the header (the integers, t, dt and the text) and of the
-   states (two reals each, in the order of the states); the text ("-option value" lines); the
-   solution and the past states */
-enum { HEAD_MAGIC, HEAD_STEP, HEAD_RANKS, HEAD_SIZE, HEAD_SCHEME, HEAD_PAST, HEAD_TEXT, HEAD_LEN };
+/* header: magic, step, ranks, global size, scheme, past states, length of the problem's text,
+   length of the running sums (all ranks'); then t, dt; the checksums of the header (the
+   integers, t, dt and the text) and of the states (two reals each, in the order of the
+   states, the running sums last); the text ("-option value" lines); the solution, the past
+   states and the running sums */
+enum { HEAD_MAGIC, HEAD_STEP, HEAD_RANKS, HEAD_SIZE, HEAD_SCHEME, HEAD_PAST, HEAD_TEXT, HEAD_SUMS, HEAD_LEN };
 
 static std::string ProblemText(const std::map<std::string, std::string> &problem)
 {
@@ -30,8 +31,8 @@ static std::string ProblemText(const std::map<std::string, std::string> &problem
    and size, then its entries. */
 static long long CheckpointBytes(const PetscInt head[HEAD_LEN])
 {
-  const long long vec = 2 * sizeof(PetscInt) + (long long)head[HEAD_SIZE] * sizeof(PetscScalar);
-  return HEAD_LEN * sizeof(PetscInt) + (2 + 2 * (2 + head[HEAD_PAST])) * sizeof(PetscReal) + head[HEAD_TEXT] + (1 + head[HEAD_PAST]) * vec;
+  const long long vec = 2 * sizeof(PetscInt) + (long long)head[HEAD_SIZE] * sizeof(PetscScalar), sums = 2 * sizeof(PetscInt) + (long long)head[HEAD_SUMS] * sizeof(PetscScalar);
+  return HEAD_LEN * sizeof(PetscInt) + (2 + 2 * (3 + head[HEAD_PAST])) * sizeof(PetscReal) + head[HEAD_TEXT] + (1 + head[HEAD_PAST]) * vec + sums;
 }
 
 /* What a checkpoint keeps of a state to tell a damaged file: a 64-bit FNV-1a hash of its
@@ -88,7 +89,15 @@ static std::string ProblemDifference(const char *file, const std::string &writte
   return "";
 }
 
-PetscErrorCode CheckpointWrite(CheckpointSeries &s, DM dm, const CheckpointHeader &c, const std::map<std::string, std::string> &problem, Vec x, const TimeHistory &h)
+/* This rank's running sums as a vector of all ranks' (their place in the file). */
+static PetscErrorCode SumsVector(MPI_Comm comm, std::vector<PetscReal> &sums, Vec *v)
+{
+  PetscFunctionBegin;
+  PetscCall(VecCreateMPIWithArray(comm, 1, (PetscInt)sums.size(), PETSC_DECIDE, (PetscScalar *)sums.data(), v));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CheckpointWrite(CheckpointSeries &s, DM dm, const CheckpointHeader &c, const std::map<std::string, std::string> &problem, Vec x, const TimeHistory &h, std::vector<PetscReal> &running)
 {
   const char *file = s.file.c_str();
   PetscViewer viewer;
@@ -106,15 +115,20 @@ PetscErrorCode CheckpointWrite(CheckpointSeries &s, DM dm, const CheckpointHeade
   PetscCall(PetscViewerBinarySetSkipInfo(viewer, PETSC_TRUE));
   PetscCall(PetscViewerFileSetMode(viewer, FILE_MODE_WRITE));
   PetscCall(PetscViewerFileSetName(viewer, tmp));
+  Vec      runningSums;
+  PetscInt M;
+  PetscCall(SumsVector(PetscObjectComm((PetscObject)dm), running, &runningSums));
+  PetscCall(VecGetSize(runningSums, &M));
   const std::string text           = ProblemText(problem);
-  const PetscInt    head[HEAD_LEN] = {Magic, c.step, size, N, h.scheme, (PetscInt)h.past.size(), (PetscInt)text.size()};
+  const PetscInt    head[HEAD_LEN] = {Magic, c.step, size, N, h.scheme, (PetscInt)h.past.size(), (PetscInt)text.size(), M};
   const PetscReal   times[2]       = {c.t, h.dt};
   std::vector<Vec>  states(1 + h.past.size(), x);
-  std::vector<PetscReal> sums(2 + 2 * states.size());
   for (size_t j = 0; j < h.past.size(); j++) {
     PetscCall(DMGetGlobalVector(dm, &states[1 + j]));
     PetscCall(DMLocalToGlobal(dm, h.past[j], INSERT_VALUES, states[1 + j]));
   }
+  states.push_back(runningSums);
+  std::vector<PetscReal> sums(2 + 2 * states.size());
   HeaderChecksum(head, times, text, &sums[0]);
   for (size_t j = 0; j < states.size(); j++) PetscCall(Checksum(states[j], &sums[2 + 2 * j]));
   PetscCall(PetscViewerBinaryWrite(viewer, head, HEAD_LEN, PETSC_INT));
@@ -122,7 +136,8 @@ PetscErrorCode CheckpointWrite(CheckpointSeries &s, DM dm, const CheckpointHeade
   PetscCall(PetscViewerBinaryWrite(viewer, sums.data(), (PetscInt)sums.size(), PETSC_REAL));
   PetscCall(PetscViewerBinaryWrite(viewer, text.c_str(), (PetscInt)text.size(), PETSC_CHAR));
   for (Vec v : states) PetscCall(VecView(v, viewer));
-  for (size_t j = 1; j < states.size(); j++) PetscCall(DMRestoreGlobalVector(dm, &states[j]));
+  for (size_t j = 1; j + 1 < states.size(); j++) PetscCall(DMRestoreGlobalVector(dm, &states[j]));
+  PetscCall(VecDestroy(&runningSums));
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCheck(rank || std::rename(tmp, file) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot rename checkpoint %s to %s", tmp, file);
   if (s.keep > 1) { /* file.<step> beside it, the older ones of this run removed */
@@ -139,7 +154,7 @@ PetscErrorCode CheckpointWrite(CheckpointSeries &s, DM dm, const CheckpointHeade
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CheckpointRead(const char *file, DM dm, const std::map<std::string, std::string> &problem, CheckpointHeader &c, Vec x, TimeHistory &h)
+PetscErrorCode CheckpointRead(const char *file, DM dm, const std::map<std::string, std::string> &problem, CheckpointHeader &c, Vec x, TimeHistory &h, std::vector<PetscReal> &running)
 {
   MPI_Comm    comm = PetscObjectComm((PetscObject)dm);
   PetscViewer viewer;
@@ -167,7 +182,7 @@ PetscErrorCode CheckpointRead(const char *file, DM dm, const std::map<std::strin
   PetscCheck(head[HEAD_MAGIC] == Magic, comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: not an fsi_app checkpoint (or one of an older version)", file);
   PetscCheck(bytes == CheckpointBytes(head), comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: %lld bytes where its header announces %lld: the file is truncated or damaged, not a whole checkpoint", file, bytes, CheckpointBytes(head));
   PetscCall(PetscViewerBinaryRead(viewer, times, 2, nullptr, PETSC_REAL));
-  std::vector<PetscReal> sums(2 * (2 + head[HEAD_PAST])), now(2);
+  std::vector<PetscReal> sums(2 * (3 + head[HEAD_PAST])), now(2);
   PetscCall(PetscViewerBinaryRead(viewer, sums.data(), (PetscInt)sums.size(), nullptr, PETSC_REAL));
   text.resize(head[HEAD_TEXT]);
   PetscCall(PetscViewerBinaryRead(viewer, &text[0], head[HEAD_TEXT], nullptr, PETSC_CHAR));
@@ -185,7 +200,7 @@ PetscErrorCode CheckpointRead(const char *file, DM dm, const std::map<std::strin
     PetscFunctionBegin;
     PetscCall(Checksum(v, now.data()));
     PetscCheck(now[0] == sums[2 + 2 * j] && now[1] == sums[3 + 2 * j], comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: %s stored in it does not match its checksum: the file was damaged after it was written", file,
-               j ? "a past state" : "the solution");
+               j == 0 ? "the solution" : j <= h.past.size() ? "a past state" : "the output's running sums");
     PetscFunctionReturn(0);
   };
   PetscCall(VecLoad(x, viewer));
@@ -198,6 +213,14 @@ PetscErrorCode CheckpointRead(const char *file, DM dm, const std::map<std::strin
     PetscCall(InsertEssentialValues(dm, c.t - j * h.dt, h.past[j]));
   }
   PetscCall(DMRestoreGlobalVector(dm, &g));
+  Vec      runningSums;
+  PetscInt M;
+  PetscCall(SumsVector(comm, running, &runningSums));
+  PetscCall(VecGetSize(runningSums, &M));
+  PetscCheck(M == head[HEAD_SUMS], comm, PETSC_ERR_ARG_INCOMP, "-restart %s: holds %" PetscInt_FMT " running sums of the output (time averages), this scene has %" PetscInt_FMT ": use the mesh and options of the run that wrote it", file, head[HEAD_SUMS], M);
+  PetscCall(VecLoad(runningSums, viewer)); /* into `running`: the vector wraps it */
+  PetscCall(intact(runningSums, 1 + h.past.size()));
+  PetscCall(VecDestroy(&runningSums));
   PetscCall(PetscViewerDestroy(&viewer));
   PetscFunctionReturn(0);
 }

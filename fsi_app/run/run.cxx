@@ -55,12 +55,30 @@ static PetscErrorCode CountUnknowns(DM dm, const Blocks &b, RunReport &report)
 }
 
 /* The state a restart continues from: step, time, solution and past states. */
-static PetscErrorCode Restart(const Scene &sc, DM dm, Vec x, TimeHistory &history, RunReport &report)
+/* The blocks' running sums, one after another (RunningSums), and back. */
+static std::vector<PetscReal> GatherSums(const Blocks &b)
 {
-  CheckpointHeader c;
+  std::vector<PetscReal> all;
+  for (Block *blk : b.list)
+    if (const std::vector<PetscReal> *s = blk->RunningSums()) all.insert(all.end(), s->begin(), s->end());
+  return all;
+}
+
+static void ScatterSums(const std::vector<PetscReal> &all, Blocks &b)
+{
+  size_t at = 0;
+  for (Block *blk : b.list)
+    if (std::vector<PetscReal> *s = blk->RunningSums()) std::copy(all.begin() + at, all.begin() + at + s->size(), s->begin()), at += s->size();
+}
+
+static PetscErrorCode Restart(const Scene &sc, Blocks &b, DM dm, Vec x, TimeHistory &history, RunReport &report)
+{
+  CheckpointHeader       c;
+  std::vector<PetscReal> sums = GatherSums(b);
 
   PetscFunctionBegin;
-  PetscCall(CheckpointRead(sc.restart, dm, sc.problem, c, x, history));
+  PetscCall(CheckpointRead(sc.restart, dm, sc.problem, c, x, history, sums));
+  ScatterSums(sums, b);
   PetscCheck(c.step < sc.Steps(), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-restart %s: the checkpoint is at step %" PetscInt_FMT " (t %g) and this run ends at step %" PetscInt_FMT ": nothing is left to do; give a %s beyond it", sc.restart, c.step, (double)c.t, sc.Steps(),
              sc.Dynamic() ? "-t_final" : "-structure_load_steps");
   report.restartedAt = c.step;
@@ -132,7 +150,7 @@ static PetscErrorCode Solve(const Scene &sc, Blocks &b, DM dm, SNES snes, Vec x,
     initial = (PetscBool)(initial || set);
   }
   if (initial && dynamic) PetscCall(TimeHistorySetState(history, x));
-  if (sc.restart[0]) PetscCall(Restart(sc, dm, x, history, report));
+  if (sc.restart[0]) PetscCall(Restart(sc, b, dm, x, history, report));
   const PetscInt first = PetscMax(report.restartedAt, 0);
   if (sc.output[0]) PetscCall(OpenOutput(sc, b, dm, first, step, x, series));
 
@@ -155,7 +173,10 @@ static PetscErrorCode Solve(const Scene &sc, Blocks &b, DM dm, SNES snes, Vec x,
     PetscFunctionBegin;
     for (Block *blk : b.list) PetscCall(blk->AfterStep(dm, k, t, y));
     if (sc.output[0] && k % sc.outputEvery == 0) PetscCall(XdmfWriteFrame(series, t, y));
-    if (sc.checkpoint[0] && (k % sc.checkpointEvery == 0 || k == loop.steps)) PetscCall(CheckpointWrite(checkpoints, dm, {k, t}, sc.problem, y, history));
+    if (sc.checkpoint[0] && (k % sc.checkpointEvery == 0 || k == loop.steps)) {
+      std::vector<PetscReal> sums = GatherSums(b);
+      PetscCall(CheckpointWrite(checkpoints, dm, {k, t}, sc.problem, y, history, sums));
+    }
     PetscFunctionReturn(0);
   };
   PetscLogDouble t0, t1;

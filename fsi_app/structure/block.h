@@ -67,7 +67,7 @@ public:
   PetscErrorCode        ConfigurePC(DM dm, PC pc, MatNullSpace *nsp) override;
   SplitSetUp            SetUpPolicy() const override { return opt.pcSetUp >= 0 ? (SplitSetUp)opt.pcSetUp : Linear() ? SETUP_ONCE : SETUP_EVERY_STEP; }
 
-  void           Output(std::vector<OutputPart> &parts) const override { parts.push_back({"wall", &forms.cells, {{"displacement", field}}}); }
+  void           Output(std::vector<OutputPart> &parts) const override { parts.push_back({"wall", &forms.cells, {{"displacement", field}}, {}}); }
   void           Unknowns(std::vector<std::pair<std::string, PetscInt>> &u) const override { u.push_back({"structure", field}); }
   PetscBool      Summary(Headline *h) const override { return *h = {"displacement", field, "displacement_norm"}, PETSC_TRUE; }
   std::string    InvertedCause() const override;
