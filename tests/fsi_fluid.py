@@ -75,7 +75,8 @@ def fluid_pulse():
     converges in every step within 3 iterations, FGMRES with the fieldsplit preconditioner needs
     at most 20 iterations per Newton step; the XDMF output has velocity, pressure and the wall
     shear stress, its time average and OSI in every frame (the largest |wss| in the file is the
-    report's)."""
+    report's); flow_boundaries.csv holds each boundary's flow and mean pressure per step (the
+    exact flow's mean pressures to 0.5 % of p_in, no flow through the wall)."""
     tmp = tempfile.mkdtemp()
     p_in, L, axis = 1330, 2.5, [0, 0.625, 1.25, 1.875, 2.5]
     r = scene("-options_file", os.path.join(SCENES, "fluid_tube1_pulse.opts"), "-mesh", os.path.join(MESHES, "tube1_L0.msh"),
@@ -104,6 +105,18 @@ def fluid_pulse():
     tau = [math.sqrt(sum(v * v for v in values[3 * k:3 * k + 3])) for k in range(1894)]
     between(max(tau) / r["results"]["wss_max"], 1 - 1e-10, 1 + 1e-10, "largest |wss| in the file / the report's")
     assert 0 < sum(t > 0 for t in tau) < 1894, sum(t > 0 for t in tau)  # zero inside the fluid
+    # each boundary's flow and mean pressure per step: the pipe's p_in (1 - z/L) averages to p_in at
+    # the inlet, 0 at the outlet, p_in / 2 over the wall; nothing crosses the no-slip wall
+    with open(os.path.join(tmp, "flow_boundaries.csv")) as f:
+        rows = [line.strip().split(",") for line in f]
+    assert rows[0] == ["t", "Q_inlet", "p_inlet", "Q_outlet", "p_outlet", "Q_interface", "p_interface"] and len(rows) == 9, rows
+    for row in rows[1:]:
+        t, q_in, p_inlet, q_out, p_outlet, q_wall, p_wall = map(float, row)
+        on = p_in if t <= 3e-3 + 1e-12 else 0.0
+        for value, exact, name in ((p_inlet, on, "inlet"), (p_outlet, 0.0, "outlet"), (p_wall, on / 2, "wall")):
+            between(abs(value - exact) / p_in, 0, 5e-3, f"t {t}: |mean pressure - exact| on the {name} / p_in")
+        assert q_wall == 0 and abs(q_in + q_out) <= 1e-6 * abs(q_out), row
+    between(float(rows[-1][3]) / r["results"]["outlet_flux"], 1 - 1e-9, 1 + 1e-9, "the CSV's last outlet flow / the report's")
     shutil.rmtree(tmp)
 
 

@@ -223,7 +223,7 @@ def outlets_restart():
     """Restart = uninterrupted run with a Windkessel (BDF2): the capacitor's pressure is a state
     of the checkpoint, so the resumed run's outlet series equal the uninterrupted run's to 1e-12,
     and so are the wall shear stress's time average and OSI (their sums are in it too); the
-    per-outlet CSV holds every step once."""
+    per-outlet CSV and the fluid's boundaries CSV hold every step once."""
     tmp = tempfile.mkdtemp()
     f = lambda name: os.path.join(tmp, name)  # noqa: E731
     base = SPLIT + MODELS + ["-dt", 1e-2, "-time_scheme", "bdf2"]
@@ -244,6 +244,11 @@ def outlets_restart():
     ts = [float(r.split(",")[0]) for r in rows[1:]]
     assert all(abs(x - 0.01 * (k + 1)) < 1e-12 for k, x in enumerate(ts)), ts
     between(abs(float(rows[-1].split(",")[2]) / p[-1] - 1), 0, 1e-9, "the CSV's last P / the report's")
+    with open(f("o_boundaries.csv")) as csv:  # the fluid's boundaries: the same steps once, Q of outlet_b the outlet's
+        rows = [line.split(",") for line in csv.read().split()]
+    assert rows[0][:5] == ["t", "Q_inlet", "p_inlet", "Q_outlet_a", "p_outlet_a"] and len(rows) == 7, rows
+    assert all(abs(float(x[0]) - 0.01 * (k + 1)) < 1e-12 for k, x in enumerate(rows[1:])), rows
+    between(abs(float(rows[-1][rows[0].index("Q_outlet_b")]) / q[-1] - 1), 0, 1e-9, "the boundaries CSV's last Q of outlet_b / the outlet's")
 
 
 @case

@@ -337,28 +337,41 @@ void FluidCouplings(const FluidForms &fb, Sparsity &s)
   }
 }
 
+PetscErrorCode FluidFaceIntegrals(DM dm, const FluidForms &fb, const std::vector<CellFace> &faces, const PetscScalar *x, PetscReal v[3])
+{
+  PetscReal sum[3] = {0, 0, 0};
+
+  PetscFunctionBegin;
+  for (const CellFace &face : faces) {
+    PetscReal ue[30], de[30], pv[4], pe[10];
+    Gather(fb.velocity, face.k, x, ue);
+    Gather(fb.pressure, face.k, x, pv);
+    for (int a = 0; a < 10; a++) pe[a] = a < 4 ? pv[a] : (pv[EdgeVertex[a - 4][0]] + pv[EdgeVertex[a - 4][1]]) / 2; /* P1 in the P2 basis */
+    if (fb.mesh) Gather(*fb.mesh, face.k, x, de);
+    ForEachFacePoint(fb, face, fb.mesh ? de : nullptr, [&](const PetscReal N[10], const PetscReal *, const PetscReal n[3], PetscReal w) {
+      for (int a = 0; a < 10; a++) sum[0] += w * N[a] * (ue[3 * a] * n[0] + ue[3 * a + 1] * n[1] + ue[3 * a + 2] * n[2]), sum[1] += w * N[a] * pe[a];
+      sum[2] += w;
+    });
+  }
+  PetscCallMPI(MPIU_Allreduce(sum, v, 3, MPIU_REAL, MPIU_SUM, PetscObjectComm((PetscObject)dm)));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode FluidFlux(DM dm, const FluidForms &fb, const std::vector<CellFace> &faces, Vec X, PetscReal *flux)
 {
   Vec                Xl;
   const PetscScalar *x;
-  PetscReal          sum = 0;
+  PetscReal          v[3];
 
   PetscFunctionBegin;
   PetscCall(DMGetLocalVector(dm, &Xl));
   PetscCall(DMGlobalToLocal(dm, X, INSERT_VALUES, Xl));
   PetscCall(InsertEssentialValues(dm, fb.time, Xl));
   PetscCall(VecGetArrayRead(Xl, &x));
-  for (const CellFace &face : faces) {
-    PetscReal ue[30], de[30];
-    Gather(fb.velocity, face.k, x, ue);
-    if (fb.mesh) Gather(*fb.mesh, face.k, x, de);
-    ForEachFacePoint(fb, face, fb.mesh ? de : nullptr, [&](const PetscReal N[10], const PetscReal *, const PetscReal n[3], PetscReal w) {
-      for (int a = 0; a < 10; a++) sum += w * N[a] * (ue[3 * a] * n[0] + ue[3 * a + 1] * n[1] + ue[3 * a + 2] * n[2]);
-    });
-  }
+  PetscCall(FluidFaceIntegrals(dm, fb, faces, x, v));
   PetscCall(VecRestoreArrayRead(Xl, &x));
   PetscCall(DMRestoreLocalVector(dm, &Xl));
-  PetscCallMPI(MPIU_Allreduce(&sum, flux, 1, MPIU_REAL, MPIU_SUM, PetscObjectComm((PetscObject)dm)));
+  *flux = v[0];
   PetscFunctionReturn(0);
 }
 

@@ -62,6 +62,9 @@ PetscErrorCode FluidJacobian(const FluidForms &fb, const PetscScalar *x, Mat P);
 /* the entries FluidJacobian inserts */
 void FluidCouplings(const FluidForms &fb, Sparsity &s);
 
+/* Over the faces in the current configuration, from the local state x: v = (int u . n da, int p da,
+   int da), summed over the ranks. */
+PetscErrorCode FluidFaceIntegrals(DM dm, const FluidForms &fb, const std::vector<CellFace> &faces, const PetscScalar *x, PetscReal v[3]);
 /* int u . n da over the faces (in the current configuration): the flux through an outlet. X is global. */
 PetscErrorCode FluidFlux(DM dm, const FluidForms &fb, const std::vector<CellFace> &faces, Vec X, PetscReal *flux);
 /* int |v|^2 dA over the faces in the reference configuration, v a P2 vector field on the fluid's

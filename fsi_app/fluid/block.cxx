@@ -5,6 +5,7 @@
 #include "mesh/mesh.h"
 #include "base/options.h"
 #include "verification/errors.h"
+#include "io/csv.h"
 #include <algorithm>
 #include <string>
 
@@ -244,6 +245,14 @@ PetscErrorCode FluidBlock::SetUp(DM dm)
   if (opt.womersley) exact.SetUp(inflow.flow.Harmonics((PetscInt)inflow.womersley.c.size() - 1), inflow.flow.period, inflow.radius, opt.rho, opt.mu);
   if (!opt.probes.empty()) PetscCall(ProbesCreate(PetscObjectComm((PetscObject)dm), fb.pressure, opt.probes, "-fluid_probes", probes));
   PetscCall(WallShearSetUp(dm, fb, Walls(), opt.shearFrom, shear));
+  std::vector<std::string> named = {opt.inlet};
+  named.insert(named.end(), outlets.begin(), outlets.end());
+  for (const auto &g : SplitList(Walls().c_str())) named.push_back(g.substr(0, g.find(':')));
+  for (const auto &g : named) {
+    std::vector<CellFace> f;
+    PetscCall(faces(g, f));
+    boundaries.push_back({g, f});
+  }
   if (sc.mms) {
     const FlowMMS *m = &flow;
     for (const auto &g : outlets) PetscCall(addTraction(g.c_str(), [m](const PetscReal x[3], const PetscReal n[3], PetscReal t, PetscReal tr[3]) { FlowMMSTraction(*m, x, n, t, tr); }));
@@ -338,27 +347,38 @@ static void PoiseuilleShear(const PetscReal *, PetscReal, const void *ctx, Petsc
   tau[0] = tau[1] = 0, tau[2] = f.R * f.dp / (2 * f.L);
 }
 
-/* The wall shear stress at time t from the global state x. */
-static PetscErrorCode ComputeShear(DM dm, const FluidForms &fb, Vec x, PetscReal t, PetscReal dt, WallShear &w)
+/* The wall shear stress at time t from the global state x, and each boundary's flow and mean
+   pressure (NAME_boundaries.csv: t, then Q_<group>, p_<group> per group). */
+PetscErrorCode FluidBlock::RecordBoundaries(DM dm, PetscInt step, PetscReal t, Vec x)
 {
-  Vec                xl;
-  const PetscScalar *a;
+  Vec                    xl;
+  const PetscScalar     *a;
+  std::vector<PetscReal> row = {t};
+  std::string            header = "t";
 
   PetscFunctionBegin;
   PetscCall(DMGetLocalVector(dm, &xl));
   PetscCall(DMGlobalToLocal(dm, x, INSERT_VALUES, xl));
   PetscCall(InsertEssentialValues(dm, t, xl));
   PetscCall(VecGetArrayRead(xl, &a));
-  PetscCall(WallShearCompute(dm, fb, a, t, dt, w));
+  PetscCall(WallShearCompute(dm, forms, a, t, sc.Dynamic() ? sc.dt : 1.0 / sc.Steps(), shear));
+  for (const auto &b : boundaries) {
+    PetscReal v[3];
+    PetscCall(FluidFaceIntegrals(dm, forms, b.second, a, v));
+    row.insert(row.end(), {v[0], v[2] > 0 ? v[1] / v[2] : 0.0});
+    header += ",Q_" + b.first + ",p_" + b.first;
+  }
   PetscCall(VecRestoreArrayRead(xl, &a));
   PetscCall(DMRestoreLocalVector(dm, &xl));
+  if (firstStep < 0) firstStep = step;
+  PetscCall(CsvAppend(sc.output, "boundaries", header, (PetscBool)(step == firstStep), (PetscBool)(firstStep > 1), row));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FluidBlock::AfterStep(DM dm, PetscInt, PetscReal t, Vec x)
+PetscErrorCode FluidBlock::AfterStep(DM dm, PetscInt step, PetscReal t, Vec x)
 {
   PetscFunctionBegin;
-  PetscCall(ComputeShear(dm, forms, x, t, sc.Dynamic() ? sc.dt : 1.0 / sc.Steps(), shear));
+  PetscCall(RecordBoundaries(dm, step, t, x));
   if (opt.womersley) {
     const std::pair<const Womersley *, const InflowProfile *> ctx(&exact, &inflow);
     Errors    e, n;

@@ -104,8 +104,11 @@ private:
   Womersley             exact;                  /* -womersley: the exact flow */
   std::vector<PetscReal> womersleyErrors;       /* -womersley: per step t, the velocity's and the WSS's errors and the exact norms */
   WallShear             shear;                  /* on the no-slip faces and the interface */
+  std::vector<std::pair<std::string, std::vector<CellFace>>> boundaries; /* each inlet, outlet and wall group: its flow and mean pressure per step */
+  PetscInt              firstStep = -1;         /* of this run (a restart's is > 1) */
 
-  std::string Walls() const;                    /* the groups of the wall shear stress */
+  std::string    Walls() const;                 /* the groups of the wall shear stress */
+  PetscErrorCode RecordBoundaries(DM dm, PetscInt step, PetscReal t, Vec x);
 };
 
 } // namespace fsi

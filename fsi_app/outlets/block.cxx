@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "block.h"
 #include "base/options.h"
+#include "io/csv.h"
 #include "discretization/ale_map.h"
 #include "discretization/fields.h"
 #include "mesh/mesh.h"
 #include <petscsf.h>
 #include <algorithm>
-#include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 namespace fsi {
@@ -302,38 +301,6 @@ PetscErrorCode OutletsBlock::InitialState(DM, Vec x, PetscBool *set)
   PetscFunctionReturn(0);
 }
 
-/* NAME_outlet_<group>.csv: a restarted run keeps the rows before its first step. */
-PetscErrorCode OutletsBlock::WriteCsv(const Outlet &o, PetscInt step) const
-{
-  PetscMPIInt rank;
-
-  PetscFunctionBegin;
-  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
-  if (!sc.output[0] || rank) PetscFunctionReturn(0);
-  const std::string xdmf = XdmfPartFile(sc.output, "outlet_" + o.group), file = xdmf.substr(0, xdmf.size() - 5) + ".csv";
-  const size_t      n    = o.series.t.size();
-  if (n == 1) { /* the run's first row: a fresh file, or the rows a restart keeps */
-    std::vector<std::string> keep;
-    if (step > 1) {
-      std::ifstream in(file);
-      std::string   line;
-      while (std::getline(in, line))
-        if (!line.empty() && line[0] != 't' && std::strtod(line.c_str(), nullptr) < o.series.t[0] - 1e-12) keep.push_back(line);
-    }
-    std::ofstream out(file, std::ios::trunc);
-    out << "t,Q,P,Pi\n";
-    for (const std::string &l : keep) out << l << "\n";
-    PetscCheck(out.good(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: cannot write %s", sc.output, file.c_str());
-  }
-  std::ofstream out(file, std::ios::app);
-  const PetscReal *v = &o.series.values[3 * (n - 1)];
-  char             row[160];
-  PetscSNPrintf(row, sizeof(row), "%.10e,%.10e,%.10e,%.10e\n", (double)o.series.t[n - 1], (double)v[0], (double)v[1], (double)v[2]);
-  out << row;
-  PetscCheck(out.good(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: cannot write %s", sc.output, file.c_str());
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode OutletsBlock::AfterStep(DM dm, PetscInt step, PetscReal t, Vec x)
 {
   const PetscScalar *a;
@@ -351,7 +318,11 @@ PetscErrorCode OutletsBlock::AfterStep(DM dm, PetscInt step, PetscReal t, Vec x)
     o.series.values.insert(o.series.values.end(), y, y + 3);
   }
   PetscCall(VecRestoreArrayRead(x, &a));
-  for (const Outlet &o : outlets) PetscCall(WriteCsv(o, step));
+  for (const Outlet &o : outlets) { /* NAME_outlet_<group>.csv */
+    const size_t n = o.series.t.size();
+    const PetscReal *v = &o.series.values[3 * (n - 1)];
+    PetscCall(CsvAppend(sc.output, "outlet_" + o.group, "t,Q,P,Pi", (PetscBool)(n == 1), (PetscBool)(step > 1), {o.series.t[n - 1], v[0], v[1], v[2]}));
+  }
   PetscFunctionReturn(0);
 }
 

@@ -72,7 +72,6 @@ public:
 private:
   /* per modelled outlet, this rank's int phi_a . n_i da over its faces, by velocity dof */
   PetscErrorCode FaceWeights(const Outlet &o, const PetscScalar *x, std::vector<PetscReal> &b) const;
-  PetscErrorCode WriteCsv(const Outlet &o, PetscInt step) const;
 
   const Scene        &sc;
   const Block        *fluid = nullptr, *geometry = nullptr;
