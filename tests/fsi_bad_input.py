@@ -471,6 +471,32 @@ def inflow_on_coupled_wall():
 
 
 @case
+def centerline_bad():
+    """A centreline file for the fibres' frame that is missing, has a branch of one point, a
+    number that is not finite, a point repeated (a segment of length 0), a branch turning back on
+    itself, or runs through the wall rather than the lumen; or a centreline for a law without
+    fibres: one sentence naming the option, the file (and line), on 2 ranks, before the first
+    step."""
+    tmp = tempfile.mkdtemp()
+    files = {"one.dat": "0 0 0\n", "nan.dat": "0 0 0\n0 0 nan\n", "repeat.dat": "0 0 0\n0 0 0\n0 0 1\n", "back.dat": "0 0 0\n0 0 1\n0 0 0.5\n",
+             "wall.dat": "0.18 0 0\n0.18 0 2.5\n", "axis.dat": "0 0 0\n0 0 2.5\n"}
+    for name, text in files.items():
+        open(os.path.join(tmp, name), "w").write(text)
+    f = lambda name: os.path.join(tmp, name)  # noqa: E731
+    base = [APP, "-mesh", os.path.join(MESHES, "tube1_L0.msh"), "-structure_region", "wall", "-structure_clamp", "wall_inlet_ring,wall_outlet_ring", "-structure_pressure", 1330]
+    arterial = ["-structure_material", "arterial"]
+    for opts, msg in ((arterial + ["-structure_centerline", f("missing.dat")], f"-structure_centerline {f('missing.dat')}: no such file"),
+                      (arterial + ["-structure_centerline", f("one.dat")], f"-structure_centerline {f('one.dat')}: branch 1 has fewer than 2 points"),
+                      (arterial + ["-structure_centerline", f("nan.dat")], f"-structure_centerline {f('nan.dat')} line 2: '0 0 nan' is not three finite numbers"),
+                      (arterial + ["-structure_centerline", f("repeat.dat")], f"-structure_centerline {f('repeat.dat')} line 2: the point repeats the previous one"),
+                      (arterial + ["-structure_centerline", f("back.dat")], f"-structure_centerline {f('back.dat')}: the centreline turns back on itself at point 2"),
+                      (arterial + ["-structure_centerline", f("wall.dat")], f"-structure_centerline {f('wall.dat')}: the centreline passes through the wall"),
+                      (["-structure_centerline", f("axis.dat")], f"-structure_centerline {f('axis.dat')}: only the arterial law (-structure_material arterial) has fibres")):
+        refused(base + opts, msg, np=2)
+    shutil.rmtree(tmp)
+
+
+@case
 def outlets_bad():
     """The outlets' 0D models: R, C, R_d <= 0 or not finite, two conditions on one outlet, an
     outlet that is also the inlet or a group of the wall, an outlet named twice, a model for a

@@ -10,7 +10,7 @@ namespace fsi {
 static bool NamesInputFile(const std::string &option)
 {
   const std::string outlet = "_pressure_waveform"; /* -outlets_<group>_pressure_waveform */
-  return option == "-options_file" || option == "-mesh" || option == "-restart" || option == "-fluid_inlet_pressure_waveform" || option == "-fluid_inflow_waveform" ||
+  return option == "-options_file" || option == "-mesh" || option == "-restart" || option == "-fluid_inlet_pressure_waveform" || option == "-fluid_inflow_waveform" || option == "-structure_centerline" ||
          (option.rfind("-outlets_", 0) == 0 && option.size() > outlet.size() && option.compare(option.size() - outlet.size(), outlet.size(), outlet) == 0);
 }
 

@@ -11,6 +11,7 @@
 #include "core/sparsity.h"
 #include "core/time_history.h"
 #include "structure/materials.h"
+#include "structure/wall_frame.h"
 #include <petscsnes.h>
 
 namespace fsi {
@@ -19,6 +20,8 @@ struct StructureForms {
   MaterialLaw        law;
   PetscReal          param[MATERIAL_MAX_PARAM]; /* the law's parameters (see materials.h) */
   PetscReal          fibreAngle = -1;            /* >= 0: arterial fibres at this angle (radians) */
+  const Centerline  *centerline = nullptr;      /* the fibres' frame (structure/wall_frame.h); nullptr: about the z-axis */
+  std::vector<PetscInt> segment;                 /* per cell: its nearest centreline segment */
   SNES               snes = nullptr;             /* told when a cell is inverted (det F <= 0) */
   PetscReal          mms = 0;                    /* amplitude of the manufactured solution (its body force), 0: none */
   DMLabel            region = nullptr;           /* cells of the wall (value 1), or all cells */

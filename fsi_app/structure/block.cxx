@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "block.h"
+#include "discretization/ale_map.h"
 #include "discretization/fields.h"
 #include "discretization/nodes.h"
 #include "mesh/mesh.h"
@@ -54,6 +55,8 @@ PetscErrorCode StructureBlock::ReadOptions(std::map<std::string, std::string> &p
   PetscCheck(o.arterial[0] > 0 && o.arterial[1] > 0 && o.arterial[2] > 1 && o.arterial[3] >= 0 && o.arterial[4] >= 2, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
              "-structure_arterial %g,%g,%g,%g,%g: need c1 > 0, eps1 > 0, eps2 > 1, alpha1 >= 0, alpha2 >= 2 (polyconvexity and a C2 energy)", (double)o.arterial[0], (double)o.arterial[1], (double)o.arterial[2], (double)o.arterial[3], (double)o.arterial[4]);
   PetscCall(r.Real("-structure_arterial_fibre_angle", "angle of the two fibre families from the circumferential direction (degrees)", &o.fibreAngle, Range{0, 90}, PROBLEM));
+  PetscCall(r.String("-structure_centerline", "the arterial fibres' frame from the vessel's centreline: a file of points 'x y z' (cm), a blank line between branches (named in an options file: relative to that file); empty: about the z-axis", o.centerline, sizeof(o.centerline), PROBLEM));
+  PetscCall(r.Bool("-structure_frame_check_z_axis", "verification: report the computed frame's largest deviation from the frame about the z-axis (a straight tube)", &o.frameCheck, RUN));
   PetscCall(r.Real("-structure_density", "density of the wall (g/cm^3)", &o.rho, Positive, PROBLEM));
   PetscCall(r.Int("-structure_subdomains", "GDSW subdomains per rank (METIS on the rank's cells)", &o.subdomains, AtLeast(1), RUN));
   {
@@ -69,6 +72,9 @@ PetscErrorCode StructureBlock::ReadOptions(std::map<std::string, std::string> &p
   PetscCheck(!set || n == 2, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-lame: give the inner and the outer radius, Ri,Ro (got %" PetscInt_FMT " values)", n);
   PetscCheck(!set || o.lameRadii[0] < o.lameRadii[1], PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-lame %s,%s: the inner radius must be smaller than the outer one (give Ri,Ro)", Number(o.lameRadii[0]).c_str(), Number(o.lameRadii[1]).c_str());
   PetscOptionsEnd();
+  PetscCheck(!o.centerline[0] || o.material == ARTERIAL, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-structure_centerline %s: only the arterial law (-structure_material arterial) has fibres", o.centerline);
+  PetscCheck(!o.frameCheck || o.centerline[0], PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-structure_frame_check_z_axis: it checks the frame of a centreline (-structure_centerline FILE)");
+  if (o.centerline[0]) PetscCall(CenterlineRead(PETSC_COMM_WORLD, "-structure_centerline", o.centerline, centerline)); /* checked before the mesh */
   PetscFunctionReturn(0);
 }
 
@@ -79,6 +85,48 @@ void StructureBlock::Groups(std::vector<GroupUse> &groups) const
   for (const auto &g : SplitList(opt.tractionGroup)) groups.push_back({g, "-structure_traction_group", 2});
   if (opt.pressure != 0) groups.push_back({opt.loaded, "-structure_pressure_group", 2});
   if (Supported()) groups.push_back({opt.supportGroup, "-structure_support_group", 2});
+}
+
+/* Each cell's nearest centreline segment; every quadrature point must have a frame (off the
+   centreline), and a cell's radial directions must agree (a centreline through the wall turns
+   them over inside a cell). */
+PetscErrorCode StructureBlock::SetUpFrame(DM dm)
+{
+  StructureForms &sb = forms;
+  PetscInt        undefined = 0, crossed = 0;
+
+  PetscFunctionBegin;
+  sb.centerline = &centerline;
+  sb.segment.resize(sb.cells.Size());
+  for (PetscInt k = 0; k < sb.cells.Size(); k++) {
+    const CellGeometry &g    = sb.cells.geom[k];
+    const P2Rule       &rule = g.curved ? sb.curvedRule : sb.rule;
+    PetscReal           centre[3] = {0, 0, 0};
+    for (int v = 0; v < 4; v++)
+      for (int d = 0; d < 3; d++) centre[d] += g.x[v][d] / 4;
+    sb.segment[k] = CenterlineNearest(centerline, centre);
+    PetscReal first[3] = {0, 0, 0};
+    for (PetscInt q = 0; q < rule.nq; q++) {
+      PetscReal dN[10][3], X[3], frame[9], theta[6];
+      ReferenceGradients(g, rule, q, dN, X);
+      if (!CenterlineFrame(centerline, sb.segment[k], X, frame)) {
+        undefined++;
+        continue;
+      }
+      if (q == 0)
+        for (int d = 0; d < 3; d++) first[d] = frame[3 + d];
+      if (first[0] * frame[3] + first[1] * frame[4] + first[2] * frame[5] < 0) crossed++;
+      ArterialFibres(X, 0, theta); /* e_theta about the z-axis */
+      const PetscReal ez[3] = {0, 0, 1};
+      for (int d = 0; d < 3; d++) frameDeviation[0] = PetscMax(frameDeviation[0], PetscAbsReal(frame[d] - ez[d])), frameDeviation[1] = PetscMax(frameDeviation[1], PetscAbsReal(frame[6 + d] - theta[d]));
+    }
+  }
+  PetscCallMPI(MPIU_Allreduce(MPI_IN_PLACE, &undefined, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)dm)));
+  PetscCallMPI(MPIU_Allreduce(MPI_IN_PLACE, &crossed, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)dm)));
+  PetscCheck(!crossed, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_WRONG, "-structure_centerline %s: the centreline passes through the wall (the radial direction turns over inside %" PetscInt_FMT " quadrature points' cells): it must run inside the lumen", opt.centerline, crossed);
+  PetscCallMPI(MPIU_Allreduce(MPI_IN_PLACE, frameDeviation, 2, MPIU_REAL, MPIU_MAX, PetscObjectComm((PetscObject)dm)));
+  PetscCheck(!undefined, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_WRONG, "-structure_centerline %s: %" PetscInt_FMT " points of the wall lie on the centreline, where the wall has no radial direction: the centreline must run inside the lumen", opt.centerline, undefined);
+  PetscFunctionReturn(0);
 }
 
 PetscErrorCode StructureBlock::AddFields(DM dm)
@@ -133,6 +181,7 @@ PetscErrorCode StructureBlock::SetUp(DM dm)
   sb.rho      = opt.rho;
   PetscCall(FieldCellsCreate(dm, sb.region, field, sb.cells));
   StructureCurvedMasses(sb);
+  if (opt.material == ARTERIAL && opt.centerline[0]) PetscCall(SetUpFrame(dm));
   if (opt.pressure != 0) {
     DMLabel loaded;
     PetscCall(DMGetLabel(dm, opt.loaded, &loaded));
@@ -196,6 +245,10 @@ PetscErrorCode StructureBlock::Results(DM dm, Vec x, PetscReal t, RunReport &rep
 
   PetscFunctionBegin;
   if (!probes.cell.empty()) report.series.push_back({"displacement", &probes});
+  if (opt.frameCheck) {
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wall frame against the frame about the z-axis: largest |e_a - e_z| %.3e, |e_c - e_theta| %.3e\n", (double)frameDeviation[0], (double)frameDeviation[1]));
+    report.results.insert(report.results.end(), {{"frame_axial_deviation", frameDeviation[0]}, {"frame_circumferential_deviation", frameDeviation[1]}});
+  }
   if (opt.lameRadii[1] > 0) PetscCall(ComputeErrors(dm, forms.cells, x, t, LameSolution, &lame, e));
   else if (sc.mms) PetscCall(ComputeErrors(dm, forms.cells, x, t, MMSElasticitySolution, &opt.mmsAmplitude, e));
   else PetscFunctionReturn(0);

@@ -32,6 +32,8 @@ struct StructureOptions {
   PetscReal mu = 7.72e4, kappa = 3.833e6;                 /* Neo-Hooke (dyn/cm^2) */
   PetscReal arterial[5] = {1.75e5, 4.998e6, 2.4, 3.00019e8, 5.1}; /* c1, eps1, eps2, alpha1, alpha2 */
   PetscReal fibreAngle  = 43.39;                          /* degrees from circumferential */
+  char      centerline[PETSC_MAX_PATH_LEN] = "";          /* the fibres' frame from this centreline ("": about the z-axis) */
+  PetscBool frameCheck = PETSC_FALSE;                     /* report the frame's deviation from the z-axis frame */
   PetscReal rho         = 1.2;
   PetscInt  subdomains = 1;
   PetscInt  pcSetUp = -1; /* its split's preconditioner rebuilt every Newton step, time step, once (SplitSetUp); -1: once if linear, else every time step */
@@ -85,6 +87,9 @@ private:
      and its ramp) or load fraction t (statics). */
   PetscReal LoadFactor(PetscReal t) const;
   bool      Supported() const { return opt.support[0] > 0 || opt.support[1] > 0; }
+  PetscErrorCode SetUpFrame(DM dm);
+  Centerline     centerline;               /* -structure_centerline */
+  PetscReal      frameDeviation[2] = {0, 0}; /* -structure_frame_check_z_axis: largest |e_a - e_z|, |e_c - e_theta| */
 };
 
 } // namespace fsi
