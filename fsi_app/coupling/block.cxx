@@ -86,20 +86,16 @@ static PetscErrorCode PointIndices(PetscSection local, PetscSection global, Pets
 
 PetscErrorCode CouplingBlock::SetUp(DM dm)
 {
-  PetscSection    local, global;
-  PetscSF         sf;
-  PetscInt        pStart, pEnd, nleaves, bad = -1, gbad;
-  const PetscInt *leaves;
-  const PetscInt  fields[4] = {field, fluid->Field("velocity"), structure->Field("displacement"), geometry->Field("geometry")};
+  PetscSection      local, global;
+  PetscInt          pStart, pEnd, bad = -1, gbad;
+  std::vector<char> owned;
+  const PetscInt    fields[4] = {field, fluid->Field("velocity"), structure->Field("displacement"), geometry->Field("geometry")};
 
   PetscFunctionBegin;
   PetscCall(DMGetLocalSection(dm, &local));
   PetscCall(DMGetGlobalSection(dm, &global));
   PetscCall(PetscSectionGetChart(local, &pStart, &pEnd));
-  PetscCall(DMGetPointSF(dm, &sf));
-  PetscCall(PetscSFGetGraph(sf, nullptr, &nleaves, &leaves, nullptr));
-  std::vector<char> ghost(pEnd - pStart, 0);
-  for (PetscInt l = 0; l < nleaves; l++) ghost[(leaves ? leaves[l] : l) - pStart] = 1;
+  PetscCall(OwnedPoints(dm, owned));
   nodes.clear();
   for (PetscInt p = pStart; p < pEnd; p++) {
     PetscInt dof;
@@ -112,7 +108,7 @@ PetscErrorCode CouplingBlock::SetUp(DM dm)
       PetscCall(PetscSectionGetFieldOffset(local, p, fields[k], &n.local[k]));
       if (dof == 3) PetscCall(PointIndices(local, global, p, fields[k], n.global[k]));
     }
-    if (!ghost[p - pStart] && bad < 0) nodes.push_back(n);
+    if (owned[p] && bad < 0) nodes.push_back(n);
   }
   PetscCallMPI(MPIU_Allreduce(&bad, &gbad, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)dm)));
   PetscCheck(gbad < 0, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_WRONG, "-geometry_interface %s: the group's faces must lie between cells of -fluid_region %s and of -structure_region %s with a node of each at every interface node (a conforming interface); mesh point %" PetscInt_FMT " lacks one", geometry->Group("interface").c_str(),

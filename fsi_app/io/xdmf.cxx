@@ -2,6 +2,7 @@
 #include "xdmf.h"
 #include "discretization/conditions.h"
 #include "discretization/nodes.h"
+#include "mesh/mesh.h"
 #include <petscsf.h>
 #include <petscviewerhdf5.h>
 
@@ -85,16 +86,13 @@ static PetscErrorCode NumberNodes(DM dm, XdmfPart &s)
   MPI_Comm          comm = PetscObjectComm((PetscObject)dm);
   PetscSection      local;
   PetscSF           sf;
-  PetscInt          pStart, pEnd, nleaves, owned = 0, first = 0;
-  const PetscInt   *leaves;
+  PetscInt          pStart, pEnd, owned = 0, first = 0;
 
   PetscFunctionBegin;
   PetscCall(DMGetLocalSection(dm, &local));
   PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
   PetscCall(DMGetPointSF(dm, &sf));
-  PetscCall(PetscSFGetGraph(sf, nullptr, &nleaves, &leaves, nullptr));
-  s.owned.assign(pEnd, 1);
-  for (PetscInt l = 0; l < nleaves; l++) s.owned[leaves ? leaves[l] : l] = 0;
+  PetscCall(OwnedPoints(dm, s.owned));
   s.node.assign(pEnd, -1);
   for (PetscInt p = pStart; p < pEnd; p++) {
     PetscInt dof;

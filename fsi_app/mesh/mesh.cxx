@@ -19,17 +19,11 @@ PetscErrorCode CountLabel(DM dm, const std::string &name, PetscInt depth, PetscI
   *count = 0;
   PetscCall(DMGetLabel(dm, name.c_str(), &label));
   if (label) {
-    PetscSF         sf;
-    const PetscInt *leaves = nullptr;
-    PetscInt        nleaves = 0;
+    std::vector<char> owned;
     PetscCall(DMPlexGetDepthStratum(dm, depth, &pStart, &pEnd));
-    PetscCall(DMGetPointSF(dm, &sf));
-    if (sf) PetscCall(PetscSFGetGraph(sf, nullptr, &nleaves, &leaves, nullptr));
-    std::vector<char> ghost(pEnd > pStart ? pEnd - pStart : 0, 0);
-    for (PetscInt l = 0; l < nleaves && leaves; l++)
-      if (leaves[l] >= pStart && leaves[l] < pEnd) ghost[leaves[l] - pStart] = 1;
+    PetscCall(OwnedPoints(dm, owned));
     PetscCall(ForEachLabelPoint(label, {}, [&](PetscInt p) -> PetscErrorCode {
-      local += p >= pStart && p < pEnd && !ghost[p - pStart];
+      local += p >= pStart && p < pEnd && owned[p];
       return 0;
     }));
   }

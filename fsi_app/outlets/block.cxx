@@ -94,19 +94,13 @@ PetscErrorCode OutletsBlock::AddFields(DM dm)
 {
   MPI_Comm        comm = PetscObjectComm((PetscObject)dm);
   PetscMPIInt     rank;
-  DMLabel         region, cells;
-  PetscSF         sf;
-  PetscInt        nleaves, pStart, pEnd;
-  const PetscInt *leaves;
+  DMLabel           region, cells;
+  std::vector<char> owned;
 
   PetscFunctionBegin;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(GetRegionLabel(dm, fluid->Region(), &region));
-  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
-  PetscCall(DMGetPointSF(dm, &sf));
-  PetscCall(PetscSFGetGraph(sf, nullptr, &nleaves, &leaves, nullptr));
-  std::vector<char> ghost(pEnd - pStart, 0);
-  for (PetscInt l = 0; l < nleaves; l++) ghost[(leaves ? leaves[l] : l) - pStart] = 1;
+  PetscCall(OwnedPoints(dm, owned));
   PetscCall(DMCreateLabel(dm, "outlet_cells"));
   PetscCall(DMGetLabel(dm, "outlet_cells", &cells));
   std::vector<PetscInt> taken;
@@ -124,7 +118,7 @@ PetscErrorCode OutletsBlock::AddFields(DM dm)
       for (PetscInt s = 0; s < n && mine < 0; s++) {
         PetscInt v;
         PetscCall(DMLabelGetValue(region, support[s], &v));
-        if (v == 1 && !ghost[support[s] - pStart] && std::find(taken.begin(), taken.end(), support[s]) == taken.end()) mine = support[s];
+        if (v == 1 && owned[support[s]] && std::find(taken.begin(), taken.end(), support[s]) == taken.end()) mine = support[s];
       }
       PetscFunctionReturn(0);
     }));
