@@ -15,7 +15,14 @@ carotid     scenes/carotid_tube.opts for three cardiac cycles (552 steps of 5 ms
             CSV) and per cycle the pressure's range and mean, and their change from cycle 2 to 3.
             Writes bench/results/arterial_carotid.{csv,cmd,png} and arterial_carotid_cycles.csv.
 
-Usage: scripts/bench_arterial.py reflection|carotid [--app PATH] [--plot]"""
+support     The same pulse with the wall's outer surface held by the tissue support
+            (-structure_support k_s) for k_s = 0, 1e6, 3e6, 1e7 dyn/cm^3: the wave speed the probes
+            measure (z = 0.625, 1.25, 1.875 cm) against the long-wave estimate for a thin wall,
+            c(k_s) = c(0) sqrt(1 + k_s Ro / (2 rho c(0)^2)) (the spring adds k_s Ro / Ri to the
+            wall's pressure per radial displacement, 2 rho c(0)^2 / Ri), and the largest wall
+            displacement. Writes bench/results/arterial_support.{csv,cmd,png}.
+
+Usage: scripts/bench_arterial.py reflection|carotid|support [--app PATH] [--plot]"""
 import csv
 import json
 import os
@@ -26,10 +33,10 @@ import tempfile
 
 from benchlib import ENV, TOP, check_command_line, loadavg, write_results
 
-check_command_line(__doc__, valued=("--app",), flags=("--plot",), modes=("reflection", "carotid"))
+check_command_line(__doc__, valued=("--app",), flags=("--plot",), modes=("reflection", "carotid", "support"))
 OUT = os.path.join(TOP, "bench", "results", "arterial_")
 MMHG, PREF, PERIOD = 1333.2, 80.0, 0.92  # the carotid scene's pressures are relative to 80 mmHg
-L, RI, RHO = 2.5, 0.15, 1.0              # tube #1
+L, RI, RO, RHO = 2.5, 0.15, 0.21, 1.0     # tube #1
 Z = (0.625, 1.25)
 
 
@@ -145,9 +152,43 @@ def plot_carotid():
     fig.savefig(OUT + "carotid.png", dpi=120)
 
 
+def support():
+    tmp = tempfile.mkdtemp()
+    probes = (0.625, 1.25, 1.875)
+    base = (f"mpiexec -n 2 {app()} -options_file scenes/fsi_tube1_arterial.opts -options_file scenes/fsi_facsi.opts -t_final 1.5e-2 "
+            f"-fluid_probes " + ",".join(f"0,0,{z}" for z in probes))
+    load, rows, cmds = loadavg(), [], []
+    for k in (0, 1e6, 3e6, 1e7):
+        cmd = base + (f" -structure_support {k:g}" if k else "") + f" -report {tmp}/r.json"
+        r = report_of(cmd, f"{tmp}/r.json", f"{tmp}/run.log")
+        rows.append({"k_s": k, "wave_speed": r["results"]["wave_speed"], "max_displacement": r["results"]["max_displacement"],
+                     "newton": sum(s["newton"] for s in r["steps"]), "gmres": sum(s["krylov"] for s in r["steps"])})
+        cmds.append(cmd.replace(app(), "install/bin/fsi_app").replace(tmp + "/", ""))
+    c0 = rows[0]["wave_speed"]
+    for row in rows:
+        row["wave_speed_estimate"] = c0 * (1 + row["k_s"] * RO / (2 * RHO * c0 * c0)) ** 0.5
+        print(row)
+    write_results(OUT + "support", rows, cmds, "scripts/bench_arterial.py support", load)
+    shutil.rmtree(tmp)
+    plot_support()
+
+
+def plot_support():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = list(csv.DictReader(open(OUT + "support.csv")))
+    k = [float(r["k_s"]) for r in rows]
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.plot(k, [float(r["wave_speed"]) for r in rows], "o-", label="measured (probes)")
+    ax.plot(k, [float(r["wave_speed_estimate"]) for r in rows], "s--", label="thin wall, long wave: c(0) sqrt(1 + k_s Ro / 2 rho c(0)²)")
+    ax.set(xlabel="tissue support k_s (dyn/cm³)", ylabel="wave speed (cm/s)", title="tube #1: the pulse's speed with the wall held by the tissue")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(OUT + "support.png", dpi=120)
+
+
 if __name__ == "__main__":
     mode = sys.argv[1]
-    if "--plot" in sys.argv:
-        plot_reflection() if mode == "reflection" else plot_carotid()
-    else:
-        reflection() if mode == "reflection" else carotid()
+    run, plot = {"reflection": (reflection, plot_reflection), "carotid": (carotid, plot_carotid), "support": (support, plot_support)}[mode]
+    plot() if "--plot" in sys.argv else run()
