@@ -63,7 +63,8 @@ Physical Surface("wall_inlet_ring") = wallIn();
 Physical Surface("wall_outlet_ring") = wallOut();
 Physical Surface("outer_wall") = outer();
 
-// element size: h everywhere, and at most (Ro - Ri) / nwall in the wall (as tube.geo)
+// Element size: h everywhere, and at most (Ro - Ri) / nwall in the wall and on its faces
+// (bifurcation.geo says why the faces too)
 Mesh.MeshSizeFromPoints = 0;
 Mesh.MeshSizeMax = h;
 Mesh.MeshSizeMin = 0;
@@ -72,12 +73,14 @@ Field[1].F = Sprintf("%g", (Ro - Ri) / nwall);
 Field[2] = Restrict;
 Field[2].InField = 1;
 Field[2].VolumesList = {wall()};
+Field[2].SurfacesList = {Abs(Boundary{ Volume{wall()}; })};
 Field[3] = Min;
 Field[3].FieldsList = {2};
 Background Field = 3;
 Mesh.MeshSizeExtendFromBoundary = 1;
-// HXT and the optimisation of every cell of quality below 0.5, as bifurcation.geo: gmsh's
-// Delaunay left a sliver in this wall at level 1 (dihedral angle 5.8 degrees), HXT none below 20.
+// HXT and the optimisation of every cell of quality below 0.5, as bifurcation.geo: no dihedral
+// angle below 20 degrees at levels 0 and 1, where gmsh's Delaunay left slivers (6.4 degrees in
+// the wall at level 0, 2.7 in the fluid at level 1).
 // HXT orders its input points by their memory addresses: two runs give different meshes unless
 // the address space is not randomised (scripts/make-meshes runs gmsh under setarch -R where it can).
 Mesh.Algorithm3D = 10;
