@@ -12,9 +12,11 @@
 // Defaults: the proportions of the carotid bifurcation model of Bharadvaj, Mabon and Giddens
 // (J. Biomech. 15, 349-362, 1982; used by Ku et al. 1985 and Perktold et al. 1991): ICA 0.7 and
 // ECA 0.6 of the CCA's diameter, both branches 25 degrees from the CCA's axis (its sinus bulb
-// is left out); an adult common carotid's lumen radius 0.3 cm and wall 0.07 cm, as the straight
-// carotid scene (scenes/carotid_tube.opts). Ours: the lengths (CCA 2, ICA 3, ECA 2 cm: short, for
-// small meshes; a developed inflow wants a longer CCA) and the fillet's radius 0.1 cm.
+// is left out); an adult common carotid's lumen radius 0.3 cm (ultrasound: diameter 6.1 mm in
+// women, 6.5 in men, Krejza et al., Stroke 37, 1103-1105, 2006) and a wall of 0.07 cm (about the
+// intima-media thickness), as the straight carotid scene (scenes/carotid_tube.opts). Ours: the
+// lengths (CCA 2, ICA 3, ECA 2 cm: short, for small meshes; a developed inflow wants a longer
+// CCA) and the fillet's radius 0.1 cm.
 //
 // Construction (OpenCASCADE), for the lumen and then for the outer surface, whose radii are
 // larger by `wall`: (1) the two branch cylinders start at the bifurcation point; their union
