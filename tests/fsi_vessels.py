@@ -83,9 +83,9 @@ def opening(m, disc, ring, centre, axis, r, w):
     """A disc and its ring on the file's nodes: planar (every node within 1e-9 cm of the plane
     through the centre normal to the axis), the disc's rim and the ring's inner rim the same nodes
     at radius r, the ring's outer rim at r + w (to 1e-9 cm); the triangles' areas are those of the
-    polygons their rims inscribe (to 1e-12); those fall short of pi r^2 by less than
-    theta_max^2 / 6 of it, theta_max the rim's largest central angle (sum of theta - sin theta
-    over the segments). Returns the areas and the shortfalls."""
+    polygons their rims inscribe (to 1e-12); those fall short of pi r^2 by at most
+    theta_max^2 / 6 of it, theta_max the rim's largest central angle (the shortfall is the sum of
+    (theta - sin theta) / (2 pi) over the segments). Returns the areas."""
     out = {}
     rims = {}
     for name in (disc, ring):
