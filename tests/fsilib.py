@@ -133,6 +133,137 @@ def mesh_cells(path):
     return cells
 
 
+class GmshMesh:
+    """A gmsh 4.1 ASCII file read directly (not through PETSc): nodes[tag] = (x, y, z) and, per
+    physical group, its dimension and its elements as lists of node tags in the file's order
+    (4 or 10 per tetrahedron, 3 or 6 per triangle)."""
+
+    def __init__(self, path):
+        with open(path) as f:
+            text = f.read().split("\n")
+        names = {}
+        k = text.index("$PhysicalNames")
+        for line in text[k + 2:text.index("$EndPhysicalNames")]:
+            dim, tag, name = line.split(maxsplit=2)
+            names[int(dim), int(tag)] = name.strip('"')
+        k = text.index("$Entities")
+        counts = [int(n) for n in text[k + 1].split()]
+        entity_groups, k = {}, k + 2 + counts[0]  # points have no bounding box: skipped
+        for dim in (1, 2, 3):
+            for line in text[k:k + counts[dim]]:
+                w = line.split()  # tag, bounding box, number of physical tags, the tags, ...
+                entity_groups[dim, int(w[0])] = [names[dim, int(t)] for t in w[8:8 + int(w[7])] if (dim, int(t)) in names]
+            k += counts[dim]
+        self.nodes, k = {}, text.index("$Nodes")
+        blocks, k = int(text[k + 1].split()[0]), k + 2
+        for _ in range(blocks):
+            n = int(text[k].split()[3])
+            for tag, coords in zip(text[k + 1:k + 1 + n], text[k + 1 + n:k + 1 + 2 * n]):
+                self.nodes[int(tag)] = tuple(float(c) for c in coords.split()[:3])
+            k += 1 + 2 * n
+        self.groups, k = {}, text.index("$Elements")
+        self.dims = {name: dim for (dim, _), name in names.items()}
+        blocks, k = int(text[k + 1].split()[0]), k + 2
+        for _ in range(blocks):
+            dim, entity, _, n = map(int, text[k].split())
+            elements = [[int(t) for t in line.split()[1:]] for line in text[k + 1:k + 1 + n]]
+            for name in entity_groups.get((dim, entity), []):
+                self.groups.setdefault(name, []).extend(elements)
+            k += 1 + n
+
+    def points(self, element):
+        return [self.nodes[t] for t in element]
+
+
+def vec_sub(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def vec_cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def vec_dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+# gmsh's 10-node tetrahedron: vertices 0-3, then the nodes of the edges in this order
+TET10_EDGES = [(0, 1), (1, 2), (0, 2), (0, 3), (2, 3), (1, 3)]
+# a rule exact for cubics on the tetrahedron (barycentric points, weights summing to 1): the
+# Jacobian determinant of a 10-node tetrahedron is a cubic
+TET_RULE3 = [((0.25, 0.25, 0.25, 0.25), -0.8)] + [(tuple(0.5 if j == i else 1 / 6 for j in range(4)), 0.45) for i in range(4)]
+
+
+def tet_jacobian(P, lam):
+    """det dX/d(l1, l2, l3) of a 4- or 10-node tetrahedron P at barycentric lam (l0 = 1 - l1 - l2 - l3):
+    6 times the volume of a straight cell."""
+    if len(P) == 4:
+        return vec_dot(vec_sub(P[1], P[0]), vec_cross(vec_sub(P[2], P[0]), vec_sub(P[3], P[0])))
+    rows = []
+    for k in (1, 2, 3):
+        g = [0.0, 0.0, 0.0]
+        for i in range(4):  # vertex functions l_i (2 l_i - 1)
+            d = (4 * lam[i] - 1) * ((i == k) - (i == 0))
+            for c in range(3):
+                g[c] += d * P[i][c]
+        for e, (a, b) in enumerate(TET10_EDGES):  # edge functions 4 l_a l_b
+            d = 4 * (lam[b] * ((a == k) - (a == 0)) + lam[a] * ((b == k) - (b == 0)))
+            for c in range(3):
+                g[c] += d * P[4 + e][c]
+        rows.append(g)
+    return vec_dot(rows[0], vec_cross(rows[1], rows[2]))
+
+
+def tet_volume(P):
+    """The volume of a straight (4 nodes) or curved (10 nodes, exact: a cubic rule) tetrahedron."""
+    if len(P) == 4:
+        return tet_jacobian(P, None) / 6
+    return sum(w * tet_jacobian(P, lam) for lam, w in TET_RULE3) / 6
+
+
+def tet_folded(P):
+    """A curved tetrahedron is folded where its Jacobian is not positive: at its 10 nodes or its
+    centroid (fsi_app's test, discretization/cells.cxx); the smallest J there over J(centroid)."""
+    at = [tuple(1.0 if j == i else 0.0 for j in range(4)) for i in range(4)]
+    at += [tuple(0.5 if j in e else 0.0 for j in range(4)) for e in TET10_EDGES] + [(0.25,) * 4]
+    j = [tet_jacobian(P, lam) for lam in at]
+    return min(j) / j[-1] if j[-1] > 0 else -1.0
+
+
+def planar_area(P, normal):
+    """The area of a 3- or 6-node triangle lying in the plane of unit normal `normal`: its in-plane
+    Jacobian is linear (6 nodes), so a 3-point rule is exact."""
+    def jac(l1, l2):
+        if len(P) == 3:
+            a, b = vec_sub(P[1], P[0]), vec_sub(P[2], P[0])
+        else:  # gmsh's 6-node triangle: vertices, then the edges (0,1), (1,2), (2,0)
+            l0 = 1 - l1 - l2
+            dN1 = [-(4 * l0 - 1), 4 * l1 - 1, 0, 4 * (l0 - l1), 4 * l2, -4 * l2]
+            dN2 = [-(4 * l0 - 1), 0, 4 * l2 - 1, -4 * l1, 4 * l1, 4 * (l0 - l2)]
+            a = tuple(sum(dN1[i] * P[i][c] for i in range(6)) for c in range(3))
+            b = tuple(sum(dN2[i] * P[i][c] for i in range(6)) for c in range(3))
+        return vec_dot(vec_cross(a, b), normal)
+    return abs(sum(jac(*q) for q in ((1 / 6, 1 / 6), (2 / 3, 1 / 6), (1 / 6, 2 / 3))) / 6)
+
+
+def boundary_loops(triangles):
+    """The vertex pairs on the boundary of a set of triangles (edges of one triangle only)."""
+    count = {}
+    for t in triangles:
+        for a, b in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0])):
+            key = (min(a, b), max(a, b))
+            count[key] = count.get(key, 0) + 1
+    return [e for e, n in count.items() if n == 1]
+
+
+def geo_defaults(geo):
+    """The parameters of a meshes/*.geo file and their defaults (its DefineConstant[...])."""
+    with open(os.path.join(MESHES, geo)) as f:
+        text = f.read()
+    body = re.search(r"DefineConstant\[(.*?)\];", text, re.S).group(1)
+    return {k: float(v) for k, v in re.findall(r"(\w+)\s*=\s*([-+0-9.eE]+)", body)}
+
+
 def rates_h(e, meshes):
     """Observed orders against each mesh's own size h ~ cells^(-1/3) (the same domain): gmsh's
     levels of a given h are not nested, and their cell counts need not grow 8-fold."""
