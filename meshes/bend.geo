@@ -85,3 +85,15 @@ Mesh.MeshSizeExtendFromBoundary = 1;
 // the address space is not randomised (scripts/make-meshes runs gmsh under setarch -R where it can).
 Mesh.Algorithm3D = 10;
 Mesh.OptimizeThreshold = 0.5;
+
+// With -setstring centerline FILE: the lumen's centre line into FILE, one point "x y z" per line
+// (the arc in 32 segments), for fsi_app's -structure_centerline (the fibres' frame).
+DefineConstant[ centerline = "" ];
+If (StrLen(centerline))
+  Printf("# bend.geo's centre line: Ri %g, Rb %g, L1 %g, L2 %g", Ri, Rb, L1, L2) > centerline;
+  Printf("0 0 0") >> centerline;
+  For k In {0 : 32}
+    Printf("%.12g 0 %.12g", Rb - Rb * Cos(k * Pi / 64), L1 + Rb * Sin(k * Pi / 64)) >> centerline;
+  EndFor
+  Printf("%.12g 0 %.12g", Rb + L2, L1 + Rb) >> centerline;
+EndIf

@@ -170,3 +170,19 @@ Mesh.MeshSizeExtendFromBoundary = 1;
 // cells).
 Mesh.Algorithm3D = 10;
 Mesh.OptimizeThreshold = 0.5;
+
+// With -setstring centerline FILE: the lumen's centre lines into FILE, for fsi_app's
+// -structure_centerline (the fibres' frame): the CCA, the ICA and the ECA, each a branch from or
+// to the bifurcation point.
+DefineConstant[ centerline = "" ];
+If (StrLen(centerline))
+  Printf("# bifurcation.geo's centre lines: CCA, ICA, ECA") > centerline;
+  Printf("0 0 %.12g", -Lc) >> centerline;
+  Printf("0 0 0") >> centerline;
+  Printf("") >> centerline;
+  Printf("0 0 0") >> centerline;
+  Printf("%.12g 0 %.12g", Li * Sin(tI), Li * Cos(tI)) >> centerline;
+  Printf("") >> centerline;
+  Printf("0 0 0") >> centerline;
+  Printf("%.12g 0 %.12g", -Le * Sin(tE), Le * Cos(tE)) >> centerline;
+EndIf

@@ -243,5 +243,50 @@ def vessel_curved():
     shutil.rmtree(tmp)
 
 
+def h5_vectors(h5, dataset):
+    """The rows of a (n, 3) dataset of an HDF5 file, through h5dump."""
+    dump = subprocess_out(["h5dump", "-y", "-w", "0", "-m", "%.17g", "-d", dataset, h5]).split("DATA {")[1]
+    v = [float(x) for x in re.findall(r"-?\d+(?:\.\d+)?(?:e[-+]\d+)?", dump)]
+    return [v[3 * k:3 * k + 3] for k in range(len(v) // 3)]
+
+
+@case
+def vessel_fibres():
+    """The arterial fibres of the bend in the frame of its centre line (bend.geo writes it:
+    meshes/bend_centerline.dat, the arc in 32 segments), as the output's fibre_1 and fibre_2 at
+    the wall's nodes: their axial direction (fibre_1 - fibre_2) / (2 sin beta) is the exact
+    tangent of the bend's circles within 1e-4 (measured 2.6e-6: the cross-section through a
+    node found on the polyline, whose tangents turn linearly; the nearest point of a chord gave
+    7e-3), e_z along the first straight part and e_x along the second to round-off, and each
+    fibre a unit vector at beta from the circumferential direction (their sum's length
+    2 cos beta)."""
+    tmp = tempfile.mkdtemp()
+    Rb, L1, beta = 1.2, 1.0, math.radians(43.39)
+    run([APP, "-mesh", os.path.join(MESHES, "bend_L0.msh"), "-structure_region", "wall", "-structure_clamp", "wall_inlet_ring,wall_outlet_ring",
+         "-structure_material", "arterial", "-structure_centerline", os.path.join(MESHES, "bend_centerline.dat"),
+         "-ksp_type", "preonly", "-pc_type", "lu", "-output", os.path.join(tmp, "b.xdmf")], 2)
+    h5 = os.path.join(tmp, "b.h5")
+    X, a1, a2 = (h5_vectors(h5, d) for d in ("/mesh/coordinates", "/fields/fibre_1_0", "/fields/fibre_2_0"))
+    worst = {"bend": 0, "first": 0, "second": 0}
+    for x, f1, f2 in zip(X, a1, a2):
+        ea = [(f1[d] - f2[d]) / (2 * math.sin(beta)) for d in range(3)]
+        s = [f1[d] + f2[d] for d in range(3)]
+        assert abs(math.sqrt(sum(v * v for v in f1)) - 1) < 1e-12 and abs(math.sqrt(sum(v * v for v in s)) - 2 * math.cos(beta)) < 1e-12, (x, f1, f2)
+        if x[2] < L1 - 0.4:
+            part, t = "first", (0, 0, 1)
+        elif x[0] > Rb + 0.4:
+            part, t = "second", (1, 0, 0)
+        else:
+            theta = math.atan2(x[2] - L1, Rb - x[0])
+            if not 0.2 < theta < math.pi / 2 - 0.2:
+                continue
+            part, t = "bend", (math.sin(theta), 0, math.cos(theta))
+        worst[part] = max(worst[part], max(abs(ea[d] - t[d]) for d in range(3)))
+    print("largest |e_a - exact tangent|:", worst)
+    between(worst["bend"], 0, 1e-4, "axial direction in the bend / the circles' tangent")
+    between(worst["first"] + worst["second"], 0, 1e-12, "axial direction in the straight parts")
+    shutil.rmtree(tmp)
+
+
 if __name__ == "__main__":
     main("fsi_vessels")

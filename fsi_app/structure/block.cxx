@@ -182,6 +182,12 @@ PetscErrorCode StructureBlock::SetUp(DM dm)
   PetscCall(FieldCellsCreate(dm, sb.region, field, sb.cells));
   StructureCurvedMasses(sb);
   if (opt.material == ARTERIAL && opt.centerline[0]) PetscCall(SetUpFrame(dm));
+  if (opt.material == ARTERIAL) {
+    PetscInt pStart, pEnd;
+    PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+    fibres[0].assign(3 * pEnd, 0), fibres[1].assign(3 * pEnd, 0);
+    NodeFibres();
+  }
   if (opt.pressure != 0) {
     DMLabel loaded;
     PetscCall(DMGetLabel(dm, opt.loaded, &loaded));
@@ -201,6 +207,33 @@ PetscErrorCode StructureBlock::SetUp(DM dm)
   for (int d = 0; d < 3; d++) sb.bodyForce[d] = opt.bodyForce[d], sb.traction[d] = opt.traction[d];
   if (!opt.probes.empty()) PetscCall(ProbesCreate(PetscObjectComm((PetscObject)dm), sb.cells, opt.probes, "-structure_probes", probes));
   PetscFunctionReturn(0);
+}
+
+/* The fibres at each node of the wall's cells, where the law places them (a node's cells agree:
+   the frame is a function of the position, and of the nearest segment, which a node's cells
+   share but near a branch's end). */
+void StructureBlock::NodeFibres()
+{
+  const StructureForms &sb = forms;
+  for (PetscInt k = 0; k < sb.cells.Size(); k++) {
+    const CellGeometry &g = sb.cells.geom[k];
+    for (int a = 0; a < 10; a++) {
+      PetscReal X[3], f[6], frame[9];
+      for (int d = 0; d < 3; d++) X[d] = a < 4 ? g.x[a][d] : (g.x[EdgeVertex[a - 4][0]][d] + g.x[EdgeVertex[a - 4][1]][d]) / 2 + (g.curved ? g.bend[3 * a + d] : 0.0);
+      if (!sb.centerline) ArterialFibres(X, sb.fibreAngle, f);
+      else if (CenterlineFrame(*sb.centerline, sb.segment[k], X, frame)) FrameFibres(frame, sb.fibreAngle, f);
+      else continue;
+      const PetscInt p = sb.cells.point[10 * k + a];
+      for (int d = 0; d < 3; d++) fibres[0][3 * p + d] = f[d], fibres[1][3 * p + d] = f[3 + d];
+    }
+  }
+}
+
+void StructureBlock::Output(std::vector<OutputPart> &parts) const
+{
+  OutputPart p{"wall", &forms.cells, {{"displacement", field}}, {}};
+  if (opt.material == ARTERIAL) p.derived = {{"fibre_1", 3, &fibres[0]}, {"fibre_2", 3, &fibres[1]}}; /* in the reference configuration */
+  parts.push_back(p);
 }
 
 PetscReal StructureBlock::LoadFactor(PetscReal t) const

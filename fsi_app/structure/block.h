@@ -69,7 +69,7 @@ public:
   PetscErrorCode        ConfigurePC(DM dm, PC pc, MatNullSpace *nsp) override;
   SplitSetUp            SetUpPolicy() const override { return opt.pcSetUp >= 0 ? (SplitSetUp)opt.pcSetUp : Linear() ? SETUP_ONCE : SETUP_EVERY_STEP; }
 
-  void           Output(std::vector<OutputPart> &parts) const override { parts.push_back({"wall", &forms.cells, {{"displacement", field}}, {}}); }
+  void           Output(std::vector<OutputPart> &parts) const override;
   void           Unknowns(std::vector<std::pair<std::string, PetscInt>> &u) const override { u.push_back({"structure", field}); }
   PetscBool      Summary(Headline *h) const override { return *h = {"displacement", field, "displacement_norm"}, PETSC_TRUE; }
   std::string    InvertedCause() const override;
@@ -90,6 +90,8 @@ private:
   PetscErrorCode SetUpFrame(DM dm);
   Centerline     centerline;               /* -structure_centerline */
   PetscReal      frameDeviation[2] = {0, 0}; /* -structure_frame_check_z_axis: largest |e_a - e_z|, |e_c - e_theta| */
+  std::vector<PetscReal> fibres[2];          /* the arterial law's fibre families at the wall's nodes (3 per mesh point), for the output */
+  void           NodeFibres();
 };
 
 } // namespace fsi

@@ -109,18 +109,69 @@ PetscInt CenterlineNearest(const Centerline &c, const PetscReal X[3])
   return best;
 }
 
+static PetscReal Length(const Centerline &c, PetscInt s)
+{
+  return std::sqrt(PetscSqr(c.x[3 * s + 3] - c.x[3 * s]) + PetscSqr(c.x[3 * s + 4] - c.x[3 * s + 1]) + PetscSqr(c.x[3 * s + 5] - c.x[3 * s + 2]));
+}
+
+/* The tangent at parameter t of segment s: its direction, turned towards the point's tangent
+   within half the shorter segment's length of each end it shares with the branch's next
+   segment, linearly: continuous along the branch, and a long straight segment keeps its own
+   direction but near its ends. */
+static void AxialDirection(const Centerline &c, PetscInt s, PetscReal t, PetscReal ea[3])
+{
+  const PetscReal l = Length(c, s);
+  for (int d = 0; d < 3; d++) ea[d] = (c.x[3 * s + 3 + d] - c.x[3 * s + d]) / l;
+  PetscReal dir[3] = {ea[0], ea[1], ea[2]};
+  for (int end = 0; end < 2; end++) {
+    const PetscInt other = end ? s + 1 : s - 1, at = end ? s + 1 : s; /* the neighbouring segment, the shared point */
+    if (!IsSegment(c, other) || c.branch[other] != c.branch[s]) continue;
+    const PetscReal w = std::min(l, Length(c, other)) / 2, dist = (end ? 1 - t : t) * l;
+    if (dist >= w) continue;
+    for (int d = 0; d < 3; d++) ea[d] += (1 - dist / w) * (c.tangent[3 * at + d] - dir[d]);
+  }
+}
+
+/* A cell's points look this many segments either side of its own (a cell may span several). */
+static const PetscInt Reach = 4;
+
+/* (X - P(t)) . e_a(t) on segment s, P(t) its point at t: zero where X lies in the centreline's
+   normal plane at P. */
+static PetscReal NormalOffset(const Centerline &c, PetscInt s, PetscReal t, const PetscReal X[3], PetscReal P[3], PetscReal ea[3])
+{
+  PetscReal g = 0;
+  AxialDirection(c, s, t, ea);
+  for (int d = 0; d < 3; d++) P[d] = (1 - t) * c.x[3 * s + d] + t * c.x[3 * s + 3 + d], g += (X[d] - P[d]) * ea[d];
+  return g;
+}
+
 bool CenterlineFrame(const Centerline &c, PetscInt s0, const PetscReal X[3], PetscReal frame[9])
 {
-  PetscInt  s = s0;
-  PetscReal t = 0, d2best = PETSC_MAX_REAL, d2;
-  for (PetscInt j = s0 - 1; j <= s0 + 1; j++) { /* the cell's segment and its neighbours in the branch */
+  PetscReal *ea = frame, *er = frame + 3, *ec = frame + 6, P[3], best = PETSC_MAX_REAL, na = 0, nr = 0, along = 0;
+  PetscBool  found = PETSC_FALSE;
+  /* P: where X's normal plane meets the cell's segment or a neighbour (a bent branch's normal
+     planes are its cross-sections; the nearest point of a chord is not), the nearest such */
+  for (PetscInt j = s0 - Reach; j <= s0 + Reach; j++) {
     if (!IsSegment(c, j) || c.branch[j] != c.branch[s0]) continue;
-    const PetscReal tj = Project(c, j, X, &d2);
-    if (d2 < d2best) s = j, t = tj, d2best = d2;
+    PetscReal a = 0, b = 1, Pj[3], e[3];
+    if (NormalOffset(c, j, a, X, Pj, e) < 0 || NormalOffset(c, j, b, X, Pj, e) > 0) continue;
+    for (int it = 0; it < 50 && b - a > 1e-15; it++) {
+      const PetscReal m = (a + b) / 2;
+      if (NormalOffset(c, j, m, X, Pj, e) > 0) a = m;
+      else b = m;
+    }
+    NormalOffset(c, j, (a + b) / 2, X, Pj, e);
+    const PetscReal dist = PetscSqr(X[0] - Pj[0]) + PetscSqr(X[1] - Pj[1]) + PetscSqr(X[2] - Pj[2]);
+    if (dist < best)
+      for (int d = 0; d < 3; d++) best = dist, P[d] = Pj[d], ea[d] = e[d], found = PETSC_TRUE;
   }
-  PetscReal *ea = frame, *er = frame + 3, *ec = frame + 6, na = 0, nr = 0, along = 0;
-  for (int d = 0; d < 3; d++) ea[d] = (1 - t) * c.tangent[3 * s + d] + t * c.tangent[3 * s + 3 + d], na += ea[d] * ea[d];
-  for (int d = 0; d < 3; d++) ea[d] /= std::sqrt(na), er[d] = X[d] - (1 - t) * c.x[3 * s + d] - t * c.x[3 * s + 3 + d], along += er[d] * ea[d];
+  if (!found) { /* beyond a branch's ends: the nearest point */
+    PetscReal d2;
+    const PetscReal t = Project(c, s0, X, &d2);
+    NormalOffset(c, s0, t, X, P, ea);
+  }
+  for (int d = 0; d < 3; d++) na += ea[d] * ea[d];
+  for (int d = 0; d < 3; d++) ea[d] /= std::sqrt(na), er[d] = X[d] - P[d], along += er[d] * ea[d];
   for (int d = 0; d < 3; d++) er[d] -= along * ea[d], nr += er[d] * er[d];
   if (!(nr > 0)) return false;
   for (int d = 0; d < 3; d++) er[d] /= std::sqrt(nr);
