@@ -28,6 +28,11 @@
 #include <string>
 #include <vector>
 
+/* PETSc 3.20 replaced PetscValid{,Int,Bool,Real}Pointer() by PetscAssertPointer() and deprecated them */
+#if PETSC_VERSION_LT(3, 20, 0)
+  #define PetscAssertPointer(p, arg) PetscValidPointer(p, arg)
+#endif
+
 namespace gdsw {
 
 enum ComponentKind { FACE = 0, EDGE = 1, VERTEX = 2 };
