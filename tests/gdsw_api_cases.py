@@ -7,7 +7,7 @@ import os
 import re
 import subprocess
 
-from gdsw_common import API, BAD_INPUT, DIAGNOSTICS, ELASTICITY, LIB, api_lines, elasticity, solves, suitesparse_major
+from gdsw_common import API, BAD_INPUT, DIAGNOSTICS, ELASTICITY, LIB, PETSC_DIR, api_lines, elasticity, solves, suitesparse_major
 from testlib import BUILD, ENV, between, case, main, run
 
 
@@ -151,14 +151,15 @@ def view_and_log():
 @case
 def installed_consumer():
     """The installed library, header and pkg-config file serve an outside C program (a 2D
-    Laplacian, 16 METIS subdomains per rank, scalar null space)."""
+    Laplacian, 16 METIS subdomains per rank, scalar null space), built against the library's
+    PETSc (petscgdsw.pc requires PETSc: PKG_CONFIG_PATH names that PETSc's pkgconfig too)."""
     import shutil
     import tempfile
     prefix = tempfile.mkdtemp(prefix="gdsw-install-")
     try:
         subprocess.run(["cmake", "--install", BUILD, "--prefix", prefix], check=True, stdout=subprocess.DEVNULL)
         pc = subprocess.run(["pkg-config", "--cflags", "--libs", "petscgdsw"], check=True, text=True, stdout=subprocess.PIPE,
-                            env=dict(ENV, PKG_CONFIG_PATH=os.path.join(prefix, "lib", "pkgconfig"))).stdout.split()
+                            env=dict(ENV, PKG_CONFIG_PATH=os.path.join(prefix, "lib", "pkgconfig") + os.pathsep + os.path.join(PETSC_DIR, "lib", "pkgconfig"))).stdout.split()
         exe = os.path.join(prefix, "consumer")
         subprocess.run(["mpicc", "-O2", "-o", exe, os.path.join(os.path.dirname(__file__), "consumer", "main.c")] + pc, check=True)
         one = run([exe, "-pc_type", "gdsw", "-pc_gdsw_subdomains", 16])
