@@ -220,7 +220,7 @@ PetscErrorCode GDSWBuildInterface(PC pc)
     std::sort(rootSets.begin() + a * W + 1, rootSets.begin() + a * W + 1 + degree[a]);
   }
   MPI_Datatype setType, dataType = MPI_DATATYPE_NULL;
-  PetscMPIInt  width;
+  PetscMPIInt width;
   PetscCall(PetscMPIIntCast(W, &width));
   PetscCallMPI(MPI_Type_contiguous(width, MPIU_INT, &setType));
   PetscCallMPI(MPI_Type_commit(&setType));
