@@ -8,7 +8,7 @@ import os
 import re
 import subprocess
 
-from gdsw_common import DIAGNOSTICS, ELASTICITY, EX17, EX56, EX71, FSI_APP, LIB, api_lines, elasticity, solved, solves
+from gdsw_common import DIAGNOSTICS, ELASTICITY, EX17, EX56, EX71, FSI_APP, LIB, PETSC_DIR, api_lines, elasticity, solved, solves
 from testlib import BUILD, ENV, between, case, main, run
 
 
@@ -416,6 +416,20 @@ def robust_floating():
     converges_within(["-n", 12, "-floating", "-boxes", 3, "-jump", "1e6", "-jump_boxes", 3], 22, "GDSW, floating, jump 1e6")
 
 
+def skip_without_ptscotch():
+    """Ends the case as skipped where PTScotch fails in PETSc's own ex17 (without gdsw): Debian 12's
+    64-bit-index PETSc links the 32-bit PTScotch, and crashes in it."""
+    try:
+        status = subprocess.run(["mpiexec", "-n", "2", EX17, "-dm_plex_dim", "3", "-dm_plex_simplex", "0", "-dm_plex_box_faces", "4,4,2", "-petscpartitioner_type", "ptscotch",
+                                 "-sol_type", "elas_ge", "-displacement_petscspace_degree", "1", "-snes_type", "ksponly", "-pc_type", "jacobi"],
+                                env=ENV, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=120).returncode
+    except subprocess.TimeoutExpired:
+        status = "hung"
+    if status != 0:
+        print(f"skipped: PTScotch fails in this PETSc's ex17 with -pc_type jacobi (exit status {status})")
+        raise SystemExit(SKIPPED)
+
+
 def plate(thickness, *opts, partitioner="ptscotch", view=False):
     """snes ex17's clamped and stretched plate (its ge testset) 10 x 10 x `thickness`, 40 x 40 x 2
     Q1 cells, the mesh partitioned by `partitioner` on 2 ranks, 16 subdomains; CG iterations to
@@ -435,6 +449,7 @@ def robust_thin_plate():
     smoothed aggregation degrades (GAMG 570 and 1578 iterations): GDSW's iterations do not grow
     with the thinness (measured 35 and 38). The rotations in the coarse space carry the bending:
     with translations only it needs 251 and 258."""
+    skip_without_ptscotch()
     for t in (0.05, 0.005):
         gdsw = plate(t)
         between(gdsw, 1, 45, f"GDSW, plate thickness {t}")
@@ -451,6 +466,7 @@ def repartition():
     parts vary from run to run). With every row on
     rank 0 (ksp ex56 on 2 ranks) the partitioner also fills the empty rank: 3 + 3 subdomains, and
     about the iterations of 6 subdomains on one rank (31; the parts differ)."""
+    skip_without_ptscotch()
     thin = plate(0.05, partitioner="simple")
     whole, out = plate(0.05, "-pc_gdsw_repartition", partitioner="simple", view=True)
     assert "repartitioned (-pc_gdsw_repartition): the whole matrix graph split by ptscotch, not each rank's rows; 8 subdomains on rank 0" in out
@@ -488,10 +504,10 @@ def client_ex71():
         between(its, 15, 30, f"ex71 CG iterations ({mt})")
 
 
-PETSC_OUTPUT = "/usr/share/petsc/3.18/share/petsc/examples/src/snes/tutorials/output"
+PETSC_OUTPUT = os.path.join(PETSC_DIR, "share", "petsc", "examples", "src", "snes", "tutorials", "output")
 HARNESS_ITERATIONS = {"ksp_ksp_tutorials-ex71_bddc_elast": 15, "ksp_ksp_tutorials-ex71_bddc_elast_3lev": 15,  # docs/testing.md quotes these
                       "ksp_ksp_tutorials-ex71_bddc_elast_deluxe_layers": 15, "ksp_ksp_tutorials-ex71_bddc_elast_dir_approx": 15,
-                      "ksp_ksp_tutorials-ex71_gdsw_elast": 15, "ksp_ksp_tutorials-ex56_1": 20, "snes_tutorials-ex17_ge_q1_gdsw": 11}
+                      "ksp_ksp_tutorials-ex71_gdsw_elast": 15, "ex56 on 8 ranks": 20, "snes_tutorials-ex17_ge_q1_gdsw": 11}
 
 
 def petsc_reference(test, pattern):
@@ -523,7 +539,10 @@ def petsc_harness():
     assert m and int(m.group(2)) == 0 and int(m.group(1)) >= 26, "expected >= 26 passing runs and none failing"
     with open(os.path.join(BUILD, "petsc-harness", "results.jsonl")) as f:
         runs = {r["label"]: r for r in map(json.loads, f)}
+    # ex56's test on 8 ranks is ex56_1 in PETSc 3.18 (-ne 13), ex56_2 in 3.22 (-ne 11, rtol 1e-4)
+    ex56 = next(label for label in ("ksp_ksp_tutorials-ex56_1", "ksp_ksp_tutorials-ex56_2") if runs[label]["nsize"] == 8)
     for label, its in HARNESS_ITERATIONS.items():
+        label = ex56 if label == "ex56 on 8 ranks" else label
         between(max(runs[label]["its"]), its - 2, its, f"{label}: iterations")
     for label, r in runs.items():
         between(max(r["solution"]["true_residual"]), 0, 1e-3, f"{label}: ||b - Ax|| / ||b||")

@@ -3,7 +3,7 @@
 import os
 import re
 
-from testlib import BUILD, run
+from testlib import BUILD, ENV, cmake_cache, run
 
 LIB = os.path.join(BUILD, "pc_gdsw", "libpetscgdsw.so")
 ELASTICITY = os.path.join(BUILD, "pc_gdsw", "gdsw_elasticity")
@@ -14,6 +14,7 @@ EX56 = os.path.join(BUILD, "tests", "petsc_ksp_ksp_ex56")
 EX71 = os.path.join(BUILD, "tests", "petsc_ksp_ksp_ex71")
 EX17 = os.path.join(BUILD, "tests", "petsc_snes_ex17")
 FSI_APP = os.path.join(BUILD, "fsi_app", "fsi_app")
+PETSC_DIR = ENV.get("PETSC_DIR", "")  # the PETSc the build found
 
 # the elasticity programs' summary line, the diagnostics driver's residual line after it, PETSc's
 # -ksp_converged_reason line, and the bare "iterations N" of the bad-input driver and the consumer
@@ -61,3 +62,9 @@ def api_lines(*opts, np=1):
             lines[w[0]] = {w[i]: w[i + 1] for i in range(1, len(w) - 1, 2)} if w[0] != "adjoint" else \
                 {"error": float(w[4]), "asymmetry": float(w[6])}
     return lines
+
+
+def suitesparse_major():
+    """SUITESPARSE_MAIN_VERSION of the SuiteSparse headers the build was made with."""
+    with open(os.path.join(cmake_cache("SUITESPARSE_INCLUDE_DIR"), "SuiteSparse_config.h")) as f:
+        return int(re.search(r"^#define SUITESPARSE_MAIN_VERSION\s+(\d+)", f.read(), re.M).group(1))

@@ -70,7 +70,7 @@ PetscErrorCode PCGDSWGetCoarseSpaceType(PC pc, PCGDSWCoarseSpaceType *type)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidPointer(type, 2);
+  PetscAssertPointer(type, 2);
   PetscUseMethod(pc, "PCGDSWGetCoarseSpaceType_C", (PC, PCGDSWCoarseSpaceType *), (pc, type));
   PetscFunctionReturn(0);
 }
@@ -142,7 +142,7 @@ PetscErrorCode PCGDSWGetRGDSWWeightType(PC pc, PCGDSWRGDSWWeightType *type)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidPointer(type, 2);
+  PetscAssertPointer(type, 2);
   PetscUseMethod(pc, "PCGDSWGetRGDSWWeightType_C", (PC, PCGDSWRGDSWWeightType *), (pc, type));
   PetscFunctionReturn(0);
 }
@@ -211,7 +211,7 @@ PetscErrorCode PCGDSWGetRotations(PC pc, PetscBool *flg)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidBoolPointer(flg, 2);
+  PetscAssertPointer(flg, 2);
   PetscUseMethod(pc, "PCGDSWGetRotations_C", (PC, PetscBool *), (pc, flg));
   PetscFunctionReturn(0);
 }
@@ -290,7 +290,7 @@ PetscErrorCode PCGDSWGetCombinationType(PC pc, PCCompositeType *type)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidPointer(type, 2);
+  PetscAssertPointer(type, 2);
   PetscUseMethod(pc, "PCGDSWGetCombinationType_C", (PC, PCCompositeType *), (pc, type));
   PetscFunctionReturn(0);
 }
@@ -358,7 +358,7 @@ PetscErrorCode PCGDSWGetReuseCoarseBasis(PC pc, PetscBool *flg)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidBoolPointer(flg, 2);
+  PetscAssertPointer(flg, 2);
   PetscUseMethod(pc, "PCGDSWGetReuseCoarseBasis_C", (PC, PetscBool *), (pc, flg));
   PetscFunctionReturn(0);
 }
@@ -395,7 +395,7 @@ PetscErrorCode PCGDSWGetCoarseBasis(PC pc, Mat *Phi)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidPointer(Phi, 2);
+  PetscAssertPointer(Phi, 2);
   PetscUseMethod(pc, "PCGDSWGetCoarseBasis_C", (PC, Mat *), (pc, Phi));
   PetscFunctionReturn(0);
 }
@@ -430,7 +430,7 @@ PetscErrorCode PCGDSWGetCoarseOperator(PC pc, Mat *A0)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidPointer(A0, 2);
+  PetscAssertPointer(A0, 2);
   PetscUseMethod(pc, "PCGDSWGetCoarseOperator_C", (PC, Mat *), (pc, A0));
   PetscFunctionReturn(0);
 }
@@ -465,7 +465,7 @@ PetscErrorCode PCGDSWGetCoarseKSP(PC pc, KSP *ksp)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidPointer(ksp, 2);
+  PetscAssertPointer(ksp, 2);
   PetscUseMethod(pc, "PCGDSWGetCoarseKSP_C", (PC, KSP *), (pc, ksp));
   PetscFunctionReturn(0);
 }

@@ -73,7 +73,7 @@ PetscErrorCode PCGDSWGetFirstLevelType(PC pc, PCGDSWFirstLevelType *type)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidPointer(type, 2);
+  PetscAssertPointer(type, 2);
   PetscUseMethod(pc, "PCGDSWGetFirstLevelType_C", (PC, PCGDSWFirstLevelType *), (pc, type));
   PetscFunctionReturn(0);
 }
@@ -158,7 +158,7 @@ PetscErrorCode PCGDSWGetLocalSolverType(PC pc, PCGDSWLocalSolverType *type)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidPointer(type, 2);
+  PetscAssertPointer(type, 2);
   PetscUseMethod(pc, "PCGDSWGetLocalSolverType_C", (PC, PCGDSWLocalSolverType *), (pc, type));
   PetscFunctionReturn(0);
 }
@@ -230,7 +230,7 @@ PetscErrorCode PCGDSWGetLocalConditionMax(PC pc, PetscReal *c)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidRealPointer(c, 2);
+  PetscAssertPointer(c, 2);
   PetscUseMethod(pc, "PCGDSWGetLocalConditionMax_C", (PC, PetscReal *), (pc, c));
   PetscFunctionReturn(0);
 }
@@ -321,7 +321,7 @@ PetscErrorCode PCGDSWGetLocalPrecision(PC pc, PCGDSWLocalPrecision *precision)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidPointer(precision, 2);
+  PetscAssertPointer(precision, 2);
   PetscUseMethod(pc, "PCGDSWGetLocalPrecision_C", (PC, PCGDSWLocalPrecision *), (pc, precision));
   PetscFunctionReturn(0);
 }
@@ -393,7 +393,7 @@ PetscErrorCode PCGDSWGetHugePages(PC pc, PetscBool *flg)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidBoolPointer(flg, 2);
+  PetscAssertPointer(flg, 2);
   PetscUseMethod(pc, "PCGDSWGetHugePages_C", (PC, PetscBool *), (pc, flg));
   PetscFunctionReturn(0);
 }

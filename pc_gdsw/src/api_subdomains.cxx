@@ -86,7 +86,7 @@ PetscErrorCode PCGDSWSetSubdomains(PC pc, PetscInt n, IS nonoverlap[], IS overla
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  if (n > 0) PetscValidPointer(nonoverlap, 3);
+  if (n > 0) PetscAssertPointer(nonoverlap, 3);
   for (PetscInt i = 0; i < n; i++) {
     PetscValidHeaderSpecific(nonoverlap[i], IS_CLASSID, 3);
     if (overlap) PetscValidHeaderSpecific(overlap[i], IS_CLASSID, 4);
@@ -208,7 +208,7 @@ PetscErrorCode PCGDSWGetSubdomainsPerRank(PC pc, PetscInt *n)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidIntPointer(n, 2);
+  PetscAssertPointer(n, 2);
   PetscUseMethod(pc, "PCGDSWGetSubdomainsPerRank_C", (PC, PetscInt *), (pc, n));
   PetscFunctionReturn(0);
 }
@@ -283,7 +283,7 @@ PetscErrorCode PCGDSWGetRepartition(PC pc, PetscBool *flg)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidBoolPointer(flg, 2);
+  PetscAssertPointer(flg, 2);
   PetscUseMethod(pc, "PCGDSWGetRepartition_C", (PC, PetscBool *), (pc, flg));
   PetscFunctionReturn(0);
 }
@@ -355,7 +355,7 @@ PetscErrorCode PCGDSWGetSubdomainSize(PC pc, PetscInt *n)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidIntPointer(n, 2);
+  PetscAssertPointer(n, 2);
   PetscUseMethod(pc, "PCGDSWGetSubdomainSize_C", (PC, PetscInt *), (pc, n));
   PetscFunctionReturn(0);
 }
@@ -426,7 +426,7 @@ PetscErrorCode PCGDSWGetOverlap(PC pc, PetscInt *k)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidIntPointer(k, 2);
+  PetscAssertPointer(k, 2);
   PetscUseMethod(pc, "PCGDSWGetOverlap_C", (PC, PetscInt *), (pc, k));
   PetscFunctionReturn(0);
 }

@@ -211,6 +211,7 @@ static PetscErrorCode PartitionNodes(PC pc, const LocalGraph &g, PetscInt nparts
     for (PetscInt a = 0; a < nn; a++) part[a] = a;
     PetscFunctionReturn(0);
   }
+  PetscCall(GDSWCheckMetisSize((PetscCount)g.adj.size()));
   std::vector<idx_t> xadj(g.xadj.begin(), g.xadj.end()), adj(g.adj.begin(), g.adj.end()), p(nn);
   idx_t nv = (idx_t)nn, ncon = 1, np = (idx_t)nparts, cut, options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
@@ -255,9 +256,15 @@ static PetscErrorCode SendToRanks(MPI_Comm comm, const std::vector<std::vector<P
   std::vector<PetscInt>    sbuf;
 
   PetscFunctionBegin;
-  for (PetscMPIInt r = 0; r < size; r++) scount[r] = (PetscMPIInt)out[r].size();
+  for (PetscMPIInt r = 0; r < size; r++) PetscCall(PetscMPIIntCast((PetscInt)out[r].size(), &scount[r]));
   PetscCallMPI(MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, comm));
-  for (PetscMPIInt r = 0; r < size; r++) sdispl[r + 1] = sdispl[r] + scount[r], rdispl[r + 1] = rdispl[r] + rcount[r], sbuf.insert(sbuf.end(), out[r].begin(), out[r].end());
+  for (PetscMPIInt r = 0; r < size; r++) {
+    const PetscCount s = (PetscCount)sdispl[r] + scount[r], t = (PetscCount)rdispl[r] + rcount[r];
+    /* MPI's displacements are ints */
+    PetscCheck(s <= PETSC_MPI_INT_MAX && t <= PETSC_MPI_INT_MAX, PETSC_COMM_SELF, PETSC_ERR_SUP, "PCGDSW: more than 2^31 - 1 indices to exchange with the other ranks at once");
+    sdispl[r + 1] = (PetscMPIInt)s, rdispl[r + 1] = (PetscMPIInt)t;
+    sbuf.insert(sbuf.end(), out[r].begin(), out[r].end());
+  }
   in.resize(rdispl[size]);
   PetscCallMPI(MPI_Alltoallv(sbuf.data(), scount.data(), sdispl.data(), MPIU_INT, in.data(), rcount.data(), rdispl.data(), MPIU_INT, comm));
   PetscFunctionReturn(0);
@@ -330,7 +337,9 @@ static PetscErrorCode PartOfOwnedNodes(PC pc, const LocalGraph &g, PetscInt n0, 
   /* number the nonempty parts 0, 1, ... in their order */
   std::vector<PetscInt> count(request, 0);
   for (PetscInt q : gpart) count[q]++;
-  PetscCallMPI(MPIU_Allreduce(MPI_IN_PLACE, count.data(), (PetscMPIInt)request, MPIU_INT, MPI_SUM, comm));
+  PetscMPIInt nrequest;
+  PetscCall(PetscMPIIntCast(request, &nrequest));
+  PetscCallMPI(MPIU_Allreduce(MPI_IN_PLACE, count.data(), nrequest, MPIU_INT, MPI_SUM, comm));
   *ntotal = 0;
   for (PetscInt &c : count) c = c ? (*ntotal)++ : -1;
   for (PetscInt &q : gpart) q = count[q];
@@ -457,7 +466,8 @@ static PetscErrorCode BalanceSubdomains(PC pc, std::vector<std::vector<PetscInt>
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (size == 1) PetscFunctionReturn(0);
-  PetscMPIInt nloc = (PetscMPIInt)sub.size();
+  PetscMPIInt nloc;
+  PetscCall(PetscMPIIntCast((PetscInt)sub.size(), &nloc));
   std::vector<PetscMPIInt> count(size), displ(size + 1, 0);
   PetscCallMPI(MPI_Allgather(&nloc, 1, MPI_INT, count.data(), 1, MPI_INT, comm));
   for (PetscMPIInt r = 0; r < size; r++) displ[r + 1] = displ[r] + count[r];

@@ -28,6 +28,11 @@
 #include <string>
 #include <vector>
 
+/* PETSc 3.20 replaced PetscValid{,Int,Bool,Real}Pointer() by PetscAssertPointer() and deprecated them */
+#if PETSC_VERSION_LT(3, 20, 0)
+  #define PetscAssertPointer(p, arg) PetscValidPointer(p, arg)
+#endif
+
 namespace gdsw {
 
 enum ComponentKind { FACE = 0, EDGE = 1, VERTEX = 2 };
@@ -194,8 +199,9 @@ PETSC_INTERN PetscErrorCode GDSWSetUpLocalSolver(PC, KSP, gdsw::Subdomain &, gds
 PETSC_INTERN PetscErrorCode GDSWViewLocalSolvers(PC, PetscViewer);
 PETSC_INTERN PetscErrorCode GDSWComposeRowRanks(PC, gdsw::Subdomain &, gdsw::LocalMatrix, Mat);
 PETSC_INTERN PetscErrorCode GDSWRegisterOrdering(void);
-/* MATSOLVERCHOLMODSINGLE hands PETSc's arrays to CHOLMOD's int, double interface */
-#if defined(PETSC_USE_64BIT_INDICES) || defined(PETSC_USE_COMPLEX) || !defined(PETSC_USE_REAL_DOUBLE)
+PETSC_INTERN PetscErrorCode GDSWCheckMetisSize(PetscCount);
+/* MATSOLVERCHOLMODSINGLE hands PETSc's arrays to CHOLMOD's real double interface (int or long) */
+#if defined(PETSC_USE_COMPLEX) || !defined(PETSC_USE_REAL_DOUBLE)
   #define GDSW_HAVE_SINGLE_FACTOR 0
 #else
   #define GDSW_HAVE_SINGLE_FACTOR 1

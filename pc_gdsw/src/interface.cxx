@@ -220,7 +220,9 @@ PetscErrorCode GDSWBuildInterface(PC pc)
     std::sort(rootSets.begin() + a * W + 1, rootSets.begin() + a * W + 1 + degree[a]);
   }
   MPI_Datatype setType, dataType = MPI_DATATYPE_NULL;
-  PetscCallMPI(MPI_Type_contiguous((int)W, MPIU_INT, &setType));
+  PetscMPIInt width;
+  PetscCall(PetscMPIIntCast(W, &width));
+  PetscCallMPI(MPI_Type_contiguous(width, MPIU_INT, &setType));
   PetscCallMPI(MPI_Type_commit(&setType));
   PetscCall(PetscSFBcastBegin(gd->nodeSF, setType, rootSets.data(), leafSets.data(), MPI_REPLACE));
   PetscCall(PetscSFBcastEnd(gd->nodeSF, setType, rootSets.data(), leafSets.data(), MPI_REPLACE));
@@ -238,7 +240,8 @@ PetscErrorCode GDSWBuildInterface(PC pc)
   PetscCall(NodeDataOwned(pc, rootData));
   if (gd->dataWidth) {
     leafData.resize(nleaves * gd->dataWidth);
-    PetscCallMPI(MPI_Type_contiguous((int)gd->dataWidth, MPIU_REAL, &dataType));
+    PetscCall(PetscMPIIntCast(gd->dataWidth, &width));
+    PetscCallMPI(MPI_Type_contiguous(width, MPIU_REAL, &dataType));
     PetscCallMPI(MPI_Type_commit(&dataType));
     PetscCall(PetscSFBcastBegin(gd->nodeSF, dataType, rootData.data(), leafData.data(), MPI_REPLACE));
     PetscCall(PetscSFBcastEnd(gd->nodeSF, dataType, rootData.data(), leafData.data(), MPI_REPLACE));

@@ -163,6 +163,32 @@ void *HugeRealloc(void *p, size_t n)
   return q;
 }
 
+/* SuiteSparse's allocation functions: SuiteSparse 7 reads and sets them through accessors, the
+   struct SuiteSparse_config of the earlier versions is no longer public */
+Hooks GetHooks()
+{
+#if SUITESPARSE_MAIN_VERSION >= 7
+  return {SuiteSparse_config_malloc_func_get(), SuiteSparse_config_calloc_func_get(), SuiteSparse_config_realloc_func_get(), SuiteSparse_config_free_func_get()};
+#else
+  return {SuiteSparse_config.malloc_func, SuiteSparse_config.calloc_func, SuiteSparse_config.realloc_func, SuiteSparse_config.free_func};
+#endif
+}
+
+void SetHooks(const Hooks &h)
+{
+#if SUITESPARSE_MAIN_VERSION >= 7
+  SuiteSparse_config_malloc_func_set(h.malloc_func);
+  SuiteSparse_config_calloc_func_set(h.calloc_func);
+  SuiteSparse_config_realloc_func_set(h.realloc_func);
+  SuiteSparse_config_free_func_set(h.free_func);
+#else
+  SuiteSparse_config.malloc_func  = h.malloc_func;
+  SuiteSparse_config.calloc_func  = h.calloc_func;
+  SuiteSparse_config.realloc_func = h.realloc_func;
+  SuiteSparse_config.free_func    = h.free_func;
+#endif
+}
+
 /* Only where huge pages are given on request: "always" gives them anyway, "never" not at all */
 bool OnRequest()
 {
@@ -193,11 +219,8 @@ PetscErrorCode GDSWHugePagesBegin(PC pc, PetscBool use, PetscBool *began, size_t
     lock                             = new std::mutex;
     mapped                           = new std::unordered_map<void *, Block>;
     spare                            = new std::vector<Block>;
-    previous                         = {SuiteSparse_config.malloc_func, SuiteSparse_config.calloc_func, SuiteSparse_config.realloc_func, SuiteSparse_config.free_func};
-    SuiteSparse_config.malloc_func  = HugeMalloc;
-    SuiteSparse_config.calloc_func  = HugeCalloc;
-    SuiteSparse_config.realloc_func = HugeRealloc;
-    SuiteSparse_config.free_func    = HugeFree;
+    previous                         = GetHooks();
+    SetHooks({HugeMalloc, HugeCalloc, HugeRealloc, HugeFree});
     return true;
   }();
   static bool told = false;

@@ -9,6 +9,7 @@
 #include "../gdswimpl.h"
 #include <metis.h>
 #include <algorithm>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -16,6 +17,15 @@ using gdsw::LocalMatrix;
 using gdsw::Subdomain;
 
 static const char RowRanksKey[] = "PCGDSW_row_ranks";
+
+/* METIS numbers a graph's vertices and edges in idx_t, 32 bits in Debian's build whatever
+   PetscInt is: a local node graph must have fewer adjacency entries than that holds */
+PetscErrorCode GDSWCheckMetisSize(PetscCount entries)
+{
+  PetscFunctionBegin;
+  PetscCheck(entries <= (PetscCount)std::numeric_limits<idx_t>::max(), PETSC_COMM_SELF, PETSC_ERR_SUP, "PCGDSW: a local node graph of %" PetscCount_FMT " adjacency entries is too large for METIS's %d-bit indices: give it more subdomains or ranks", entries, IDXTYPEWIDTH);
+  PetscFunctionReturn(0);
+}
 
 /* METIS nested dissection of the graph of A (of its block rows if blocked) whose vertices are
    the runs of rows first[v] .. first[v + 1] - 1 (symmetric, without the diagonal, no edge twice); perm[j] is the vertex
@@ -40,6 +50,7 @@ static PetscErrorCode NestedDissection(Mat A, PetscBool blocked, const std::vect
         if (b != a && mark[b] != a) mark[b] = a, pairs.push_back(a), pairs.push_back(b);
       }
   PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, blocked, &m, &ia, &ja, &done));
+  PetscCall(GDSWCheckMetisSize((PetscCount)pairs.size()));
   std::vector<idx_t> xadj(nv + 1, 0), adj(pairs.size());
   for (size_t k = 0; k < pairs.size(); k += 2) xadj[pairs[k] + 1]++, xadj[pairs[k + 1] + 1]++;
   for (PetscInt a = 0; a < nv; a++) xadj[a + 1] += xadj[a];

@@ -17,12 +17,23 @@
 #include <cmath>
 #include <vector>
 
+/* A's CSR arrays go to CHOLMOD as they are: its int interface for 32-bit PetscInt, its long one
+   (cholmod_l_*, SuiteSparse_long: int64_t) for 64-bit; the factor's arrays are then PetscInt too */
+#if defined(PETSC_USE_64BIT_INDICES)
+  #define CHOLMOD(name) cholmod_l_##name
+  #define CHOLMOD_ITYPE CHOLMOD_LONG
+static_assert(sizeof(SuiteSparse_long) == sizeof(PetscInt), "CHOLMOD's long indices are not PetscInt");
+#else
+  #define CHOLMOD(name) cholmod_##name
+  #define CHOLMOD_ITYPE CHOLMOD_INT
+#endif
 
+/* single-precision BLAS, which PETSc's double build does not declare; its ints are PetscBLASInt */
 extern "C" {
-void strsv_(const char *, const char *, const char *, const int *, const float *, const int *, float *, const int *);
-void dtrsv_(const char *, const char *, const char *, const int *, const double *, const int *, double *, const int *);
-void sgemv_(const char *, const int *, const int *, const float *, const float *, const int *, const float *, const int *, const float *, float *, const int *);
-void dgemv_(const char *, const int *, const int *, const double *, const double *, const int *, const double *, const int *, const double *, double *, const int *);
+void strsv_(const char *, const char *, const char *, const PetscBLASInt *, const float *, const PetscBLASInt *, float *, const PetscBLASInt *);
+void dtrsv_(const char *, const char *, const char *, const PetscBLASInt *, const double *, const PetscBLASInt *, double *, const PetscBLASInt *);
+void sgemv_(const char *, const PetscBLASInt *, const PetscBLASInt *, const float *, const float *, const PetscBLASInt *, const float *, const PetscBLASInt *, const float *, float *, const PetscBLASInt *);
+void dgemv_(const char *, const PetscBLASInt *, const PetscBLASInt *, const double *, const double *, const PetscBLASInt *, const double *, const PetscBLASInt *, const double *, double *, const PetscBLASInt *);
 }
 
 namespace {
@@ -42,50 +53,53 @@ struct SingleFactor {
   std::vector<double> xd, wd;
 };
 
-inline void Trsv(const char *trans, int n, const float *a, int lda, float *x)
+inline void Trsv(const char *trans, PetscBLASInt n, const float *a, PetscBLASInt lda, float *x)
 {
-  const int one = 1;
+  const PetscBLASInt one = 1;
   strsv_("L", trans, "N", &n, a, &lda, x, &one);
 }
-inline void Trsv(const char *trans, int n, const double *a, int lda, double *x)
+inline void Trsv(const char *trans, PetscBLASInt n, const double *a, PetscBLASInt lda, double *x)
 {
-  const int one = 1;
+  const PetscBLASInt one = 1;
   dtrsv_("L", trans, "N", &n, a, &lda, x, &one);
 }
-inline void Gemv(const char *trans, int m, int n, float alpha, const float *a, int lda, const float *x, float beta, float *y)
+inline void Gemv(const char *trans, PetscBLASInt m, PetscBLASInt n, float alpha, const float *a, PetscBLASInt lda, const float *x, float beta, float *y)
 {
-  const int one = 1;
+  const PetscBLASInt one = 1;
   sgemv_(trans, &m, &n, &alpha, a, &lda, x, &one, &beta, y, &one);
 }
-inline void Gemv(const char *trans, int m, int n, double alpha, const double *a, int lda, const double *x, double beta, double *y)
+inline void Gemv(const char *trans, PetscBLASInt m, PetscBLASInt n, double alpha, const double *a, PetscBLASInt lda, const double *x, double beta, double *y)
 {
-  const int one = 1;
+  const PetscBLASInt one = 1;
   dgemv_(trans, &m, &n, &alpha, a, &lda, x, &one, &beta, y, &one);
 }
 
 /* x := L^{-T} L^{-1} x in the factor's (permuted) order. Supernode k holds columns
    super[k]..super[k+1]-1 as a dense column-major block of nr rows: its lower-triangular diagonal
-   block, then the rows s[pi[k]+nc..] below it. w: at least the largest nr - nc. */
+   block, then the rows s[pi[k]+nc..] below it. w: at least the largest nr - nc. A supernode's
+   rows fit PetscBLASInt (checked by the analysis). */
 template <typename T>
 void SupernodalSolve(const cholmod_factor *L, const T *Lx, T *x, T *w)
 {
-  const int *super = (const int *)L->super, *pi = (const int *)L->pi, *px = (const int *)L->px, *s = (const int *)L->s;
-  const int  nsuper = (int)L->nsuper;
-  for (int k = 0; k < nsuper; k++) {
-    const int  c0 = super[k], nc = super[k + 1] - c0, nr = pi[k + 1] - pi[k], nb = nr - nc;
-    const T   *X = Lx + px[k];
-    const int *below = s + pi[k] + nc;
+  const PetscInt *super = (const PetscInt *)L->super, *pi = (const PetscInt *)L->pi, *px = (const PetscInt *)L->px, *s = (const PetscInt *)L->s;
+  const PetscInt  nsuper = (PetscInt)L->nsuper;
+  for (PetscInt k = 0; k < nsuper; k++) {
+    const PetscInt     c0 = super[k];
+    const PetscBLASInt nc = (PetscBLASInt)(super[k + 1] - c0), nr = (PetscBLASInt)(pi[k + 1] - pi[k]), nb = nr - nc;
+    const T           *X     = Lx + px[k];
+    const PetscInt    *below = s + pi[k] + nc;
     Trsv("N", nc, X, nr, x + c0);
     if (!nb) continue;
     Gemv("N", nb, nc, T(1), X + nc, nr, x + c0, T(0), w);
-    for (int i = 0; i < nb; i++) x[below[i]] -= w[i];
+    for (PetscBLASInt i = 0; i < nb; i++) x[below[i]] -= w[i];
   }
-  for (int k = nsuper - 1; k >= 0; k--) {
-    const int  c0 = super[k], nc = super[k + 1] - c0, nr = pi[k + 1] - pi[k], nb = nr - nc;
-    const T   *X = Lx + px[k];
-    const int *below = s + pi[k] + nc;
+  for (PetscInt k = nsuper - 1; k >= 0; k--) {
+    const PetscInt     c0 = super[k];
+    const PetscBLASInt nc = (PetscBLASInt)(super[k + 1] - c0), nr = (PetscBLASInt)(pi[k + 1] - pi[k]), nb = nr - nc;
+    const T           *X     = Lx + px[k];
+    const PetscInt    *below = s + pi[k] + nc;
     if (nb) {
-      for (int i = 0; i < nb; i++) w[i] = x[below[i]];
+      for (PetscBLASInt i = 0; i < nb; i++) w[i] = x[below[i]];
       Gemv("T", nb, nc, T(-1), X + nc, nr, w, T(1), x + c0);
     }
     Trsv("T", nc, X, nr, x + c0);
@@ -96,11 +110,11 @@ void SupernodalSolve(const cholmod_factor *L, const T *Lx, T *x, T *w)
 template <typename T>
 void Solve(const cholmod_factor *L, const T *Lx, const PetscScalar *b, PetscScalar *y, std::vector<T> &x, std::vector<T> &w)
 {
-  const int *P = (const int *)L->Perm;
-  const int  n = (int)L->n;
-  for (int i = 0; i < n; i++) x[i] = (T)b[P[i]];
+  const PetscInt *P = (const PetscInt *)L->Perm;
+  const PetscInt  n = (PetscInt)L->n;
+  for (PetscInt i = 0; i < n; i++) x[i] = (T)b[P[i]];
   SupernodalSolve(L, Lx, x.data(), w.data());
-  for (int i = 0; i < n; i++) y[P[i]] = (PetscScalar)x[i];
+  for (PetscInt i = 0; i < n; i++) y[P[i]] = (PetscScalar)x[i];
 }
 
 /* A's CSR rows as CHOLMOD's compressed columns: the transpose, the same matrix; CHOLMOD reads the
@@ -120,7 +134,7 @@ PetscErrorCode Wrap(Mat A, cholmod_sparse *S, const PetscScalar **values)
   S->p      = (void *)ia;
   S->i      = (void *)ja;
   S->stype  = 1;
-  S->itype  = CHOLMOD_INT;
+  S->itype  = CHOLMOD_ITYPE;
   S->dtype  = CHOLMOD_DOUBLE;
   S->sorted = 1;
   S->packed = 1;
@@ -189,7 +203,7 @@ PetscErrorCode MatCholeskyFactorNumeric_CholmodSingle(Mat F, Mat A, const MatFac
   if (f->Lf) f->Lf = (float *)SuiteSparse_free(f->Lf);
   PetscCall(Wrap(A, &S, &values));
   const double triangle = 0.5 * ((double)S.nzmax + (double)S.nrow);
-  const int    ok       = cholmod_factorize(&S, f->L, &f->c);
+  const int    ok       = CHOLMOD(factorize)(&S, f->L, &f->c);
   PetscCall(Unwrap(A, &S, &values));
   PetscCheck(ok && f->c.status >= CHOLMOD_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "cholmod_single: CHOLMOD's factorisation failed with status %d", f->c.status);
   PetscCall(PetscLogFlops(f->c.fl));
@@ -213,7 +227,7 @@ PetscErrorCode MatCholeskyFactorNumeric_CholmodSingle(Mat F, Mat A, const MatFac
   if (f->single) {
     PetscCall(PetscInfo(F, "cholmod_single: %zu entries; the single-precision solve deviates by %g from the double one\n", f->nnz, f->deviation));
     /* the double values go; the pattern stays for the next factorisation */
-    PetscCheck(cholmod_change_factor(CHOLMOD_PATTERN, 1, 1, 1, 1, f->L, &f->c), PETSC_COMM_SELF, PETSC_ERR_LIB, "cholmod_single: CHOLMOD could not drop the double factor (status %d)", f->c.status);
+    PetscCheck(CHOLMOD(change_factor)(CHOLMOD_PATTERN, 1, 1, 1, 1, f->L, &f->c), PETSC_COMM_SELF, PETSC_ERR_LIB, "cholmod_single: CHOLMOD could not drop the double factor (status %d)", f->c.status);
   } else {
     f->Lf = (float *)SuiteSparse_free(f->Lf);
     PetscCall(PetscInfo(F, "cholmod_single: the single-precision solve deviates by %g from the double one (more than %g): the factor stays in double precision\n", f->deviation, f->deviationMax));
@@ -251,7 +265,7 @@ PetscErrorCode MatCholeskyFactorSymbolic_CholmodSingle(Mat F, Mat A, IS perm, co
   PetscObjectOptionsBegin((PetscObject)F);
   PetscCall(PetscOptionsReal("-mat_cholmod_single_deviation_max", "Largest deviation of the single-precision solve from the double one, relative to the solution, that keeps the factor in single precision", "MATSOLVERCHOLMODSINGLE", f->deviationMax, &f->deviationMax, nullptr));
   PetscOptionsEnd();
-  if (f->L) cholmod_free_factor(&f->L, &f->c);
+  if (f->L) CHOLMOD(free_factor)(&f->L, &f->c);
   if (f->Lf) f->Lf = (float *)SuiteSparse_free(f->Lf);
   PetscCall(Wrap(A, &S, nullptr));
   if (perm) { /* the given ordering only */
@@ -259,17 +273,20 @@ PetscErrorCode MatCholeskyFactorSymbolic_CholmodSingle(Mat F, Mat A, IS perm, co
     f->c.nmethods           = 1;
     f->c.method[0].ordering = CHOLMOD_GIVEN;
   } else f->c.nmethods = 0; /* CHOLMOD's own choice */
-  f->L = cholmod_analyze_p(&S, (int *)p, nullptr, 0, &f->c);
+  f->L = CHOLMOD(analyze_p)(&S, (PetscInt *)p, nullptr, 0, &f->c);
   if (perm) PetscCall(ISRestoreIndices(perm, &p));
   PetscCall(Unwrap(A, &S, nullptr));
   PetscCheck(f->L, PETSC_COMM_SELF, PETSC_ERR_LIB, "cholmod_single: CHOLMOD's analysis failed with status %d", f->c.status);
-  /* the supernodes' sizes fix the factor's entries and the solves' work vectors */
-  size_t maxBelow = 0;
+  /* the supernodes' sizes fix the factor's entries and the solves' work vectors; BLAS takes their rows */
+  const PetscInt *super = (const PetscInt *)f->L->super, *pi = (const PetscInt *)f->L->pi;
+  PetscInt        maxBelow = 0, maxRows = 0;
   for (size_t k = 0; k < f->L->nsuper; k++) {
-    const int *super = (const int *)f->L->super, *pi = (const int *)f->L->pi;
-    maxBelow = std::max(maxBelow, (size_t)(pi[k + 1] - pi[k] - (super[k + 1] - super[k])));
+    maxBelow = std::max(maxBelow, pi[k + 1] - pi[k] - (super[k + 1] - super[k]));
+    maxRows  = std::max(maxRows, pi[k + 1] - pi[k]);
   }
-  f->nnz = (size_t)((const int *)f->L->px)[f->L->nsuper];
+  PetscBLASInt rows;
+  PetscCall(PetscBLASIntCast(maxRows, &rows));
+  f->nnz = (size_t)((const PetscInt *)f->L->px)[f->L->nsuper];
   f->xd.resize(f->L->n);
   f->wd.resize(maxBelow + 1);
   f->xf.resize(f->L->n);
@@ -322,8 +339,8 @@ PetscErrorCode MatDestroy_CholmodSingle(Mat F)
 
   PetscFunctionBegin;
   if (f->Lf) SuiteSparse_free(f->Lf);
-  if (f->L) cholmod_free_factor(&f->L, &f->c);
-  cholmod_finish(&f->c);
+  if (f->L) CHOLMOD(free_factor)(&f->L, &f->c);
+  CHOLMOD(finish)(&f->c);
   delete f;
   F->data = nullptr;
   PetscCall(PetscObjectComposeFunction((PetscObject)F, "MatFactorGetSolverType_C", nullptr));
@@ -344,7 +361,7 @@ PetscErrorCode MatGetFactor_SeqAIJ_CholmodSingle(Mat A, MatFactorType ftype, Mat
   PetscCall(PetscLayoutSetUp(B->cmap));
   PetscCall(PetscStrallocpy(MATSOLVERCHOLMODSINGLE, &((PetscObject)B)->type_name));
   f = new SingleFactor;
-  cholmod_start(&f->c);
+  CHOLMOD(start)(&f->c);
   f->c.supernodal = CHOLMOD_SUPERNODAL; /* the solve above walks supernodes */
   f->c.print      = 0;                  /* a matrix that is not positive definite is the PC's failure to report */
   B->data                        = f;
@@ -387,7 +404,7 @@ PetscErrorCode MatGetFactor_SeqAIJ_CholmodSingle(Mat A, MatFactorType ftype, Mat
    factorisation itself is CHOLMOD's, in double precision, with the ordering the `PC` gives
    (`MatGetOrdering()`, e.g. gdsw_nodes) or, with the ordering external (the default), CHOLMOD's
    own choice. A matrix that is not positive definite gives `MAT_FACTOR_NUMERIC_ZEROPIVOT`, as a
-   failed `PCCHOLESKY`. Only real double-precision PETSc builds with 32-bit indices.
+   failed `PCCHOLESKY`. Only real double-precision PETSc builds (32- or 64-bit indices).
 
    Level: intermediate
 
