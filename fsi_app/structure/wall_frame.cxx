@@ -153,17 +153,20 @@ bool CenterlineFrame(const Centerline &c, PetscInt s0, const PetscReal X[3], Pet
      planes are its cross-sections; the nearest point of a chord is not), the nearest such */
   for (PetscInt j = s0 - Reach; j <= s0 + Reach; j++) {
     if (!IsSegment(c, j) || c.branch[j] != c.branch[s0]) continue;
-    PetscReal a = 0, b = 1, Pj[3], e[3];
-    if (NormalOffset(c, j, a, X, Pj, e) < 0 || NormalOffset(c, j, b, X, Pj, e) > 0) continue;
-    for (int it = 0; it < 50 && b - a > 1e-15; it++) {
-      const PetscReal m = (a + b) / 2;
-      if (NormalOffset(c, j, m, X, Pj, e) > 0) a = m;
-      else b = m;
+    PetscReal a = 0, b = 1, ga, gb, t = 0, Pj[3], e[3];
+    if ((ga = NormalOffset(c, j, a, X, Pj, e)) < 0 || (gb = NormalOffset(c, j, b, X, Pj, e)) > 0) continue;
+    for (int it = 0; it < 60 && b - a > 1e-14; it++) { /* regula falsi (Illinois): g is nearly linear in t */
+      t = ga - gb > 0 ? (a * (-gb) + b * ga) / (ga - gb) : (a + b) / 2;
+      const PetscReal g = NormalOffset(c, j, t, X, Pj, e);
+      if (PetscAbsReal(g) <= 1e-13 * Length(c, j)) break;
+      if (g > 0) a = t, ga = g, gb /= 2;
+      else b = t, gb = g, ga /= 2;
     }
-    NormalOffset(c, j, (a + b) / 2, X, Pj, e);
+    NormalOffset(c, j, t, X, Pj, e);
     const PetscReal dist = PetscSqr(X[0] - Pj[0]) + PetscSqr(X[1] - Pj[1]) + PetscSqr(X[2] - Pj[2]);
-    if (dist < best)
-      for (int d = 0; d < 3; d++) best = dist, P[d] = Pj[d], ea[d] = e[d], found = PETSC_TRUE;
+    if (dist >= best) continue;
+    best = dist, found = PETSC_TRUE;
+    for (int d = 0; d < 3; d++) P[d] = Pj[d], ea[d] = e[d];
   }
   if (!found) { /* beyond a branch's ends: the nearest point */
     PetscReal d2;
