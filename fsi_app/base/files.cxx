@@ -73,6 +73,15 @@ PetscErrorCode CheckWritable(MPI_Comm comm, const char *option, const std::strin
   PetscFunctionReturn(0);
 }
 
+std::string OpenInput(const char *option, const std::string &path, std::ifstream &in)
+{
+  struct stat st;
+  if (stat(path.c_str(), &st) != 0) return std::string(option) + " " + path + ": no such file";
+  if (!S_ISREG(st.st_mode)) return std::string(option) + " " + path + ": not a regular file";
+  in.open(path);
+  return in ? "" : std::string(option) + " " + path + ": cannot be read";
+}
+
 PetscErrorCode FileSize(MPI_Comm comm, const std::string &path, long long *bytes)
 {
   PetscMPIInt rank;

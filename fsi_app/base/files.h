@@ -7,6 +7,7 @@
 #include <petscsys.h>
 #include <cstdio>
 #include <functional>
+#include <fstream>
 #include <string>
 
 namespace fsi {
@@ -38,6 +39,10 @@ std::string CanonicalPath(const std::string &path);
 /* Close a file opened on rank 0 for writing, and stop with a sentence naming `option` and the
    system's reason if anything written to it was lost (a full disk: /dev/full). */
 PetscErrorCode CloseWritten(MPI_Comm comm, const char *option, const char *path, FILE *fp);
+
+/* Open the text file `path` (the value of `option`) for reading on this rank: "" or the
+   sentence saying why not (no such file, not a regular file, unreadable). */
+std::string OpenInput(const char *option, const std::string &path, std::ifstream &in);
 
 /* The size of `path` in bytes as rank 0 sees it; -1 if it cannot be opened. */
 PetscErrorCode FileSize(MPI_Comm comm, const std::string &path, long long *bytes);

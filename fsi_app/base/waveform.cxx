@@ -6,7 +6,6 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
-#include <sys/stat.h>
 
 namespace fsi {
 
@@ -87,11 +86,9 @@ std::vector<PetscReal> Waveform::Harmonics(PetscInt K) const
 /* "" if the samples of `file` make a waveform (then in w.t, w.v), else why not. */
 static std::string ReadSamples(const char *option, const std::string &file, Waveform &w)
 {
-  struct stat st;
-  if (stat(file.c_str(), &st) != 0) return std::string(option) + " " + file + ": no such file";
-  if (!S_ISREG(st.st_mode)) return std::string(option) + " " + file + ": not a regular file";
-  std::ifstream in(file);
-  if (!in) return std::string(option) + " " + file + ": cannot be read";
+  std::ifstream     in;
+  const std::string why = OpenInput(option, file, in);
+  if (!why.empty()) return why;
   const std::string at = std::string(option) + " " + file + " line ";
   long              number = 0;
   for (std::string line; std::getline(in, line);) {

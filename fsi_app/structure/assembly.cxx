@@ -99,15 +99,15 @@ static PetscReal DamperRate(const StructureForms &sb)
   return sb.history && !sb.history->past.empty() ? sb.history->first[0] / sb.history->dt : 0.0;
 }
 
-/* The law's parameters at reference point X of cell k: the fibre directions of the arterial
-   wall, about the z-axis or in the frame of the vessel's centreline. */
-static void PointParameters(const StructureForms &sb, PetscInt k, const PetscReal X[3], PetscReal p[MATERIAL_MAX_PARAM])
+/* The law's parameters at quadrature point q (reference point X) of cell k: the fibre
+   directions of the arterial wall, about the z-axis or in the frame of the vessel's centreline. */
+static void PointParameters(const StructureForms &sb, PetscInt k, PetscInt q, const PetscReal X[3], PetscReal p[MATERIAL_MAX_PARAM])
 {
-  PetscReal frame[9];
   for (int i = 0; i < MATERIAL_MAX_PARAM; i++) p[i] = sb.param[i];
   if (sb.fibreAngle < 0) return;
   if (!sb.centerline) ArterialFibres(X, sb.fibreAngle, &p[ARTERIAL_FIBRES]);
-  else if (CenterlineFrame(*sb.centerline, sb.segment[k], X, frame)) FrameFibres(frame, sb.fibreAngle, &p[ARTERIAL_FIBRES]); /* SetUp checked every point */
+  else
+    for (int i = 0; i < 6; i++) p[ARTERIAL_FIBRES + i] = sb.fibres[sb.fibresAt[k] + 6 * q + i]; /* the set-up's */
 }
 
 /* The rule of cell g: a curved cell's integrands are rational in l, and take a rule of higher
@@ -183,7 +183,7 @@ PetscErrorCode StructureResidual(StructureForms &sb, const PetscScalar *x, Petsc
         inverted++;
         continue;
       }
-      PointParameters(sb, k, X, p);
+      PointParameters(sb, k, q, X, p);
       sb.law.stress(F, p, P);
       if (sb.mms) MMSBodyForce(X, sb.mms, sb.law.tangent, p, b);
       for (int i = 0; i < 3; i++) b[i] += sb.load * sb.bodyForce[i];
@@ -254,7 +254,7 @@ PetscErrorCode StructureJacobian(const StructureForms &sb, const PetscScalar *x,
       PetscReal       dN[10][3], X[3], F[9], A[81], G[10][3][9], p[MATERIAL_MAX_PARAM];
       const PetscReal wq = ReferenceGradients(g, rule, q, dN, X);
       if (DeformationGradient(de, dN, F) <= 0 && sb.law.finiteStrain) continue; /* the residual reported it */
-      PointParameters(sb, k, X, p);
+      PointParameters(sb, k, q, X, p);
       sb.law.tangent(F, p, A);
       /* G[a][i][k*3+l] = sum_j dN_a,j A_ijkl: then K_(ai)(bk) = sum_l G[a][i][kl] dN_b,l */
       for (int a = 0; a < 10; a++)

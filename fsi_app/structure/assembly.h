@@ -22,6 +22,8 @@ struct StructureForms {
   PetscReal          fibreAngle = -1;            /* >= 0: arterial fibres at this angle (radians) */
   const Centerline  *centerline = nullptr;      /* the fibres' frame (structure/wall_frame.h); nullptr: about the z-axis */
   std::vector<PetscInt> segment;                 /* per cell: its nearest centreline segment */
+  std::vector<PetscReal> fibres;                 /* the centreline frame's fibres, 6 per quadrature point of each cell's rule */
+  std::vector<PetscInt>  fibresAt;               /* per cell: its first in `fibres` */
   SNES               snes = nullptr;             /* told when a cell is inverted (det F <= 0) */
   PetscReal          mms = 0;                    /* amplitude of the manufactured solution (its body force), 0: none */
   DMLabel            region = nullptr;           /* cells of the wall (value 1), or all cells */

@@ -87,7 +87,8 @@ void StructureBlock::Groups(std::vector<GroupUse> &groups) const
   if (Supported()) groups.push_back({opt.supportGroup, "-structure_support_group", 2});
 }
 
-/* Each cell's nearest centreline segment; every quadrature point must have a frame (off the
+/* Each cell's nearest centreline segment and the fibres at its quadrature points; every
+   quadrature point must have a frame (off the
    centreline), and a cell's radial directions must agree (a centreline through the wall turns
    them over inside a cell). */
 PetscErrorCode StructureBlock::SetUpFrame(DM dm)
@@ -98,6 +99,8 @@ PetscErrorCode StructureBlock::SetUpFrame(DM dm)
   PetscFunctionBegin;
   sb.centerline = &centerline;
   sb.segment.resize(sb.cells.Size());
+  sb.fibresAt.resize(sb.cells.Size());
+  sb.fibres.clear();
   for (PetscInt k = 0; k < sb.cells.Size(); k++) {
     const CellGeometry &g    = sb.cells.geom[k];
     const P2Rule       &rule = g.curved ? sb.curvedRule : sb.rule;
@@ -106,6 +109,8 @@ PetscErrorCode StructureBlock::SetUpFrame(DM dm)
       for (int d = 0; d < 3; d++) centre[d] += g.x[v][d] / 4;
     sb.segment[k] = CenterlineNearest(centerline, centre);
     PetscReal first[3] = {0, 0, 0};
+    sb.fibresAt[k] = (PetscInt)sb.fibres.size();
+    sb.fibres.resize(sb.fibres.size() + 6 * rule.nq, 0.0);
     for (PetscInt q = 0; q < rule.nq; q++) {
       PetscReal dN[10][3], X[3], frame[9], theta[6];
       ReferenceGradients(g, rule, q, dN, X);
@@ -113,6 +118,7 @@ PetscErrorCode StructureBlock::SetUpFrame(DM dm)
         undefined++;
         continue;
       }
+      FrameFibres(frame, sb.fibreAngle, &sb.fibres[sb.fibresAt[k] + 6 * q]); /* once: the frame does not change */
       if (q == 0)
         for (int d = 0; d < 3; d++) first[d] = frame[3 + d];
       if (first[0] * frame[3] + first[1] * frame[4] + first[2] * frame[5] < 0) crossed++;

@@ -1,20 +1,18 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "wall_frame.h"
 #include "base/files.h"
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
-#include <sys/stat.h>
 
 namespace fsi {
 
 static std::string ReadPoints(const char *option, const std::string &file, Centerline &c)
 {
-  struct stat st;
-  if (stat(file.c_str(), &st) != 0) return std::string(option) + " " + file + ": no such file";
-  if (!S_ISREG(st.st_mode)) return std::string(option) + " " + file + ": not a regular file";
-  std::ifstream in(file);
-  if (!in) return std::string(option) + " " + file + ": cannot be read";
+  std::ifstream     in;
+  const std::string why = OpenInput(option, file, in);
+  if (!why.empty()) return why;
   const std::string at = std::string(option) + " " + file + " line ";
   PetscInt          branch = 0, inBranch = 0;
   long              number = 0;
