@@ -22,10 +22,21 @@ support     The same pulse with the wall's outer surface held by the tissue supp
             wall's pressure per radial displacement, 2 rho c(0)^2 / Ri), and the largest wall
             displacement. Writes bench/results/arterial_support.{csv,cmd,png}.
 
-Usage: scripts/bench_arterial.py reflection|carotid|support [--app PATH] [--plot]"""
+bifurcation scenes/carotid_bifurcation.opts for one cardiac cycle (184 steps of 5 ms, BDF2,
+            2 ranks) with scenes/fsi_facsi_lu_fluid.opts, in --work DIR (default
+            $TMPDIR/gdsw_bifurcation): checkpoints every 10 steps, and a run that finds DIR's
+            checkpoint continues from it (the cycle takes hours here). Per step: Newton and FGMRES
+            counts, seconds, the CCA's flow and pressure and each branch's (its RCR's P and Pi).
+            Writes bench/results/arterial_bifurcation.{csv,cmd,png} and, with ParaView, the WSS
+            on the lumen and the wall's displacement at peak systole
+            (arterial_bifurcation_wss.png, arterial_bifurcation_displacement.png).
+
+Usage: scripts/bench_arterial.py reflection|carotid|support|bifurcation [--app PATH] [--work DIR] [--plot]"""
 import csv
+import glob
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -33,7 +44,7 @@ import tempfile
 
 from benchlib import ENV, TOP, check_command_line, loadavg, write_results
 
-check_command_line(__doc__, valued=("--app",), flags=("--plot",), modes=("reflection", "carotid", "support"))
+check_command_line(__doc__, valued=("--app", "--work"), flags=("--plot",), modes=("reflection", "carotid", "support", "bifurcation"))
 OUT = os.path.join(TOP, "bench", "results", "arterial_")
 MMHG, PREF, PERIOD = 1333.2, 80.0, 0.92  # the carotid scene's pressures are relative to 80 mmHg
 L, RI, RO, RHO = 2.5, 0.15, 0.21, 1.0     # tube #1
@@ -188,7 +199,94 @@ def plot_support():
     fig.savefig(OUT + "support.png", dpi=120)
 
 
+def work_dir():
+    return sys.argv[sys.argv.index("--work") + 1] if "--work" in sys.argv else os.path.join(tempfile.gettempdir(), "gdsw_bifurcation")
+
+
+def bifurcation_command(work):
+    return (f"mpiexec -n 2 {app()} -options_file scenes/carotid_bifurcation.opts -options_file scenes/fsi_facsi_lu_fluid.opts "
+            f"-output {work}/bif.xdmf -output_every 4 -checkpoint {work}/bif.chk -checkpoint_every 10")
+
+
+def bifurcation():
+    work = work_dir()
+    os.makedirs(work, exist_ok=True)
+    chk, logs = os.path.join(work, "bif.chk"), glob.glob(os.path.join(work, "run*.log"))
+    load = loadavg()
+    with open(os.path.join(work, f"run{len(logs)}.log"), "w") as f:
+        subprocess.run((bifurcation_command(work) + (f" -restart {chk}" if os.path.exists(chk) else "")).split(), env=ENV, cwd=TOP, stdout=f,
+                       stderr=subprocess.STDOUT)
+    collect(work, load)
+    plot_bifurcation()
+
+
+def collect(work, load):
+    """bench/results/arterial_bifurcation.csv from the run's logs and CSV files in work (a run
+    not finished yet gives the steps it has)."""
+    steps = {}
+    for name in sorted(glob.glob(os.path.join(work, "run*.log"))):  # a step run again after a restart: its last record
+        for m in re.finditer(r"^step (\d+)/\d+ t (\S+) newton (\d+) krylov (\d+) (\w+).*\((\S+) s, peak memory (\d+) MiB\)", open(name).read(), re.M):
+            steps[int(m.group(1))] = {"newton": int(m.group(3)), "gmres": int(m.group(4)), "reason": m.group(5), "seconds": float(m.group(6)), "peak_MiB": int(m.group(7))}
+    flows = list(csv.DictReader(open(os.path.join(work, "bif_boundaries.csv"))))
+    rcr = {b: list(csv.DictReader(open(os.path.join(work, f"bif_outlet_outlet_{b}.csv")))) for b in ("ica", "eca")}
+    rows = []
+    for k, f in enumerate(flows):
+        row = {"t": float(f["t"]), **steps.get(k + 1, {}), "Q_cca": -float(f["Q_inlet"]), "p_cca_mmHg": float(f["p_inlet"]) / MMHG + PREF}
+        for b in ("ica", "eca"):
+            row[f"Q_{b}"] = float(f[f"Q_outlet_{b}"])
+            row[f"P_{b}_mmHg"] = float(rcr[b][k]["P"]) / MMHG + PREF
+            row[f"Pi_{b}_mmHg"] = float(rcr[b][k]["Pi"]) / MMHG + PREF
+        rows.append(row)
+    cmd = bifurcation_command(work).replace(app(), "install/bin/fsi_app").replace(work + "/", "")
+    write_results(OUT + "bifurcation", rows, [cmd, cmd + " -restart bif.chk  # after a stop: continues from the newest checkpoint"],
+                  f"scripts/bench_arterial.py bifurcation ({len(steps)} of 184 steps run)", load)
+
+
+def render(work, part, field, png, warp, title):
+    """pvbatch scripts/render_vessel.py at peak systole (the inflow's largest), under a virtual X
+    display; ParaView may abort on closing the display after it saved the picture."""
+    rows = list(csv.DictReader(open(OUT + "bifurcation.csv")))
+    peak = max(rows, key=lambda r: float(r["Q_cca"]))["t"]
+    cmd = ["xvfb-run", "-a", "-s", "-screen 0 1600x1200x24", "pvbatch", os.path.join(TOP, "scripts", "render_vessel.py"), os.path.join(work, "bif.xdmf"),
+           png, peak, part, field, str(warp), title]
+    print(subprocess.run(cmd, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True).stdout.splitlines()[:1])
+
+
+def plot_bifurcation():
+    work = work_dir()
+    if "--plot" in sys.argv and os.path.exists(os.path.join(work, "bif_boundaries.csv")):
+        collect(work, None)
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = list(csv.DictReader(open(OUT + "bifurcation.csv")))
+    t = [float(r["t"]) for r in rows]
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4))
+    for key, label in (("cca", "CCA (inlet)"), ("ica", "ICA"), ("eca", "ECA")):
+        ax[0].plot(t, [float(r[f"Q_{key}"]) for r in rows], label=label)
+    ax[0].set(xlabel="t (s)", ylabel="flow (mL/s)", title="flow rates")
+    ax[1].plot(t, [float(r["p_cca_mmHg"]) for r in rows], label="CCA inlet (mean)")
+    for b in ("ica", "eca"):
+        ax[1].plot(t, [float(r[f"P_{b}_mmHg"]) for r in rows], label=f"{b.upper()} outlet (RCR P)")
+    ax[1].set(xlabel="t (s)", ylabel="pressure (mmHg)", title="pressures")
+    done = [r for r in rows if r.get("newton")]
+    ax[2].plot([float(r["t"]) for r in done], [int(r["newton"]) for r in done], "o", ms=3, label="Newton steps")
+    ax2 = ax[2].twinx()
+    ax2.plot([float(r["t"]) for r in done], [int(r["gmres"]) / max(int(r["newton"]), 1) for r in done], "C1.", ms=4, label="FGMRES per Newton")
+    ax[2].set(xlabel="t (s)", ylabel="Newton steps per time step", title="solver per time step")
+    ax2.set(ylabel="FGMRES iterations per Newton step")
+    for a in ax[:2]:
+        a.legend()
+    fig.suptitle("carotid bifurcation (bifurcation_L0, arterial wall, FaCSI + GDSW, 2 ranks)")
+    fig.tight_layout()
+    fig.savefig(OUT + "bifurcation.png", dpi=120)
+    if os.path.exists(os.path.join(work, "bif.xdmf")) and shutil.which("pvbatch"):
+        render(work, "fluid", "wss", OUT + "bifurcation_wss.png", 1, "wall shear stress at peak systole (dyn/cm^2)")
+        render(work, "wall", "displacement", OUT + "bifurcation_displacement.png", 5, "wall displacement at peak systole (cm), warped 5x")
+
+
 if __name__ == "__main__":
     mode = sys.argv[1]
-    run, plot = {"reflection": (reflection, plot_reflection), "carotid": (carotid, plot_carotid), "support": (support, plot_support)}[mode]
+    run, plot = {"reflection": (reflection, plot_reflection), "carotid": (carotid, plot_carotid), "support": (support, plot_support),
+                 "bifurcation": (bifurcation, plot_bifurcation)}[mode]
     plot() if "--plot" in sys.argv else run()

@@ -58,6 +58,7 @@ def structure_bad_options():
                       (["-structure_arterial", "1,1,0.5,1,5"], "need c1 > 0, eps1 > 0, eps2 > 1, alpha1 >= 0, alpha2 >= 2"),
                       (["-max_step_cuts", -1], "-max_step_cuts: value must be in [0, 20] (got -1)"),
                       (["-time_scheme", "bdf3"], "-time_scheme bdf3 is not one of: backward_euler, bdf2"),
+                      (["-dt", 1e-3, "-time_predictor_order", 2], "-time_predictor_order 2: backward_euler keeps 2 past states, so the order is at most 1"),
                       (["-output", "out.vtk"], "-output out.vtk: name the file <name>.xdmf"),
                       (["-restart", "nothere.chk"], "-restart nothere.chk: no such checkpoint"),
                       (["-structure_nh_mu", -1, "-structure_material", "neohooke"], "-structure_nh_mu: value must be positive (got -1)"),

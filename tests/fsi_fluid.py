@@ -298,5 +298,30 @@ def geometry_harmonic():
         between(r["krylov"], 5, 30, "CG + GAMG iterations (vector Laplacian)")
 
 
+@case
+def time_predictor_extrapolation():
+    """Newton's first iterate extrapolated from the past states (-time_predictor_order k): the
+    geometry block alone on a prescribed interface motion a s(t) (x^2 - y^2, -2xy, 0),
+    s = sin^2(pi t / 2), is linear in its data, so the solution is s(t) D(x) and the first
+    residual of the step to t^(n+1) is |s^(n+1) - p_k| |A D|, p_k the polynomial through
+    s^n ... s^(n-k) at t^(n+1) (the states before t = 0 at rest). Each step's first residual,
+    relative to order 0's first one, equals that closed form (BDF2 keeps four states: k <= 3)."""
+    dt, steps = 0.1, 5
+    s = [math.sin(math.pi * max(n, 0) * dt / 2) ** 2 for n in range(-4, steps + 1)]  # s[n + 4] = s(n dt)
+    base = ["-blocks", "geometry", "-mesh", os.path.join(MESHES, "tube1_L0.msh"), "-fluid_region", "fluid", "-geometry_interface", "interface",
+            "-geometry_slip", "inlet:z,outlet:z", "-geometry_amplitude", 0.1, "-geometry_ramp", 1, "-dt", dt, "-t_final", steps * dt,
+            "-time_scheme", "bdf2", "-ksp_type", "cg", "-ksp_rtol", 1e-12, "-pc_type", "gamg", "-snes_monitor"]
+    unit = None
+    for k in (0, 1, 2, 3):
+        first = [float(x) for x in re.findall(r" 0 SNES Function norm (\S+)", scene(*base, "-time_predictor_order", k)["out"])]
+        assert len(first) == steps, first
+        unit = unit or first[0] / s[5]
+        for n in range(steps):  # the step from n dt to (n + 1) dt
+            w = [math.prod((1 + m) / (m - i) for m in range(k + 1) if m != i) for i in range(k + 1)]  # Lagrange weights at tau = 1
+            predicted = sum(w[i] * s[n - i + 4] for i in range(k + 1))
+            between(first[n] / unit, abs(s[n + 5] - predicted) * (1 - 1e-6), abs(s[n + 5] - predicted) * (1 + 1e-6),
+                    f"order {k}, step {n + 1}: first residual relative to |A D|")
+
+
 if __name__ == "__main__":
     main("fsi_fluid")

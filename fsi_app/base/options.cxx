@@ -208,16 +208,18 @@ PetscErrorCode OptionReader::Bool(const char *name, const char *text, PetscBool 
 
 PetscErrorCode OptionReader::Numbers(const char *name, const char *text, std::vector<PetscReal> &v, PetscInt max, const char *what, OptionRole role) const
 {
-  std::vector<PetscReal> x(max + 1); /* room for one more: PETSc drops values beyond the array silently */
-  PetscInt               n = max + 1;
+  std::vector<PetscReal> x(max);
+  PetscInt               n = max;
   std::string            value;
   PetscBool              given;
 
   PetscFunctionBegin;
   PetscCall(Given(name, what, value, &given));
+  /* PETSc reads the first max values and drops the rest without a word */
+  const PetscInt count = given ? (PetscInt)std::count(value.begin(), value.end(), ',') + 1 : 0;
+  PetscCheck(count <= max, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s %s: give at most %" PetscInt_FMT " values (got %" PetscInt_FMT ")", name, value.c_str(), max, count);
   if (given) PetscCall(PetscOptionsGetRealArray(PetscOptionsObject->options, PetscOptionsObject->prefix, name, x.data(), &n, nullptr));
   if (given) PetscCall(Check(name, x.data(), n, Any));
-  PetscCheck(!given || n <= max, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "%s: at most %" PetscInt_FMT " values (got more than %" PetscInt_FMT ")", name, max, max);
   if (given) v.assign(x.begin(), x.begin() + n);
   PetscCall(Help(name, List(v.data(), (PetscInt)v.size()), "", text, what));
   Record(name, role, v.data(), (PetscInt)v.size());

@@ -36,6 +36,7 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(opt.Enum("-time_scheme", "differences in time for the inertia", TimeSchemeNames, &sc.scheme, RUN));
   PetscCall(opt.Int("-structure_load_steps", "apply the load in this many equal increments (statics)", &sc.loadSteps, Range{1, 10000}, RUN));
   PetscCall(opt.Int("-max_step_cuts", "a failed step (Newton diverged, element inverted) is halved up to this many times before the run stops", &sc.maxCuts, Range{0, 20}, RUN));
+  PetscCall(opt.Int("-time_predictor_order", "Newton's first iterate of a time step: the polynomial through the last k+1 states extrapolated to the new time (0: the last state; at most 1 with backward_euler, 3 with bdf2)", &sc.predictorOrder, Range{0, 3}, RUN));
   PetscCall(opt.Bool("-mms", "verification: each block's manufactured solution (the wall: -mms_amplitude on the unit cube; the fluid: -mms_flow)", &sc.mms, PROBLEM));
   PetscCall(opt.String("-output", "XDMF file of the solution over time (+ .h5 beside it); empty: none", sc.output, sizeof(sc.output), RUN));
   PetscCall(opt.Int("-output_every", "write every n-th step", &sc.outputEvery, AtLeast(1), RUN));
@@ -46,6 +47,7 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(opt.String("-report", "run report (JSON): unknowns, iterations per step, errors, time per phase, memory; empty: none", sc.report, sizeof(sc.report), RUN));
   PetscOptionsEnd();
   PetscCall(CheckTimeSteps(sc));
+  PetscCheck(sc.predictorOrder <= (sc.scheme == BDF2 ? 3 : 1), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-time_predictor_order %" PetscInt_FMT ": backward_euler keeps 2 past states, so the order is at most 1 (bdf2: 3)", sc.predictorOrder);
   sc.blocks = SplitList(blocks);
   PetscFunctionReturn(0);
 }

@@ -20,6 +20,7 @@ struct Scene {
   /* time, or load increments in statics */
   PetscReal  dt = 0, tFinal = 0.01;
   PetscInt   loadSteps = 1, maxCuts = 4;
+  PetscInt   predictorOrder = 1; /* Newton's first iterate from the past states (core/time_history.h) */
   TimeScheme scheme    = BACKWARD_EULER;
   /* verification: each block's manufactured solution */
   PetscBool mms = PETSC_FALSE;

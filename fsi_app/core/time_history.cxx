@@ -96,6 +96,35 @@ PetscErrorCode TimeHistoryCopy(const TimeHistory &from, TimeHistory &to)
   PetscFunctionReturn(0);
 }
 
+/* The weights w_i of the polynomial through the s states at times -i (in steps) evaluated at tau. */
+static std::vector<PetscScalar> LagrangeWeights(PetscInt s, PetscReal tau)
+{
+  std::vector<PetscScalar> w(s);
+  for (PetscInt i = 0; i < s; i++) {
+    PetscReal l = 1;
+    for (PetscInt k = 0; k < s; k++)
+      if (k != i) l *= (tau + k) / (PetscReal)(k - i);
+    w[i] = l;
+  }
+  return w;
+}
+
+PetscErrorCode TimeHistoryExtrapolate(const TimeHistory &h, PetscInt order, Vec x)
+{
+  Vec xl;
+
+  PetscFunctionBegin;
+  if (h.past.empty() || order < 1) PetscFunctionReturn(0);
+  PetscCheck(order < (PetscInt)h.past.size(), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "extrapolation of order %" PetscInt_FMT " needs %" PetscInt_FMT " past states, the scheme keeps %zu", order, order + 1, h.past.size());
+  const std::vector<PetscScalar> w = LagrangeWeights(order + 1, 1.0);
+  PetscCall(DMGetLocalVector(h.dm, &xl));
+  PetscCall(VecSet(xl, 0.0));
+  PetscCall(VecMAXPY(xl, order + 1, w.data(), const_cast<Vec *>(h.past.data())));
+  PetscCall(DMLocalToGlobal(h.dm, xl, INSERT_VALUES, x));
+  PetscCall(DMRestoreLocalVector(h.dm, &xl));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode TimeHistoryRefine(TimeHistory &h, PetscInt m)
 {
   const PetscInt   s = (PetscInt)h.past.size();
@@ -107,13 +136,7 @@ PetscErrorCode TimeHistoryRefine(TimeHistory &h, PetscInt m)
     PetscCall(VecCopy(h.past[i], old[i]));
   }
   for (PetscInt j = 1; j < s; j++) { /* tau in units of the old step: stored states at -i, wanted at -j/m */
-    std::vector<PetscScalar> w(s);
-    for (PetscInt i = 0; i < s; i++) {
-      PetscReal l = 1;
-      for (PetscInt k = 0; k < s; k++)
-        if (k != i) l *= (-(PetscReal)j / m + k) / (PetscReal)(k - i);
-      w[i] = l;
-    }
+    const std::vector<PetscScalar> w = LagrangeWeights(s, -(PetscReal)j / m);
     PetscCall(VecSet(h.past[j], 0.0));
     PetscCall(VecMAXPY(h.past[j], s, w.data(), old.data()));
   }

@@ -43,6 +43,10 @@ PetscErrorCode TimeHistoryRestorePast(const TimeHistory *h, std::vector<const Pe
 PetscErrorCode TimeHistoryDuplicate(const TimeHistory &h, TimeHistory &copy);
 PetscErrorCode TimeHistoryCopy(const TimeHistory &from, TimeHistory &to);
 
+/* x (global) = the polynomial through the newest order+1 states extrapolated one step ahead,
+   t^(n+1): Newton's first iterate (order 1: 2 x^n - x^(n-1)). Order 0 leaves x alone. */
+PetscErrorCode TimeHistoryExtrapolate(const TimeHistory &h, PetscInt order, Vec x);
+
 /* The same history on the finer step dt/m: states at t^n - j dt/m from the polynomial through
    the stored states (interpolation: these times lie between the stored ones). */
 PetscErrorCode TimeHistoryRefine(TimeHistory &h, PetscInt m);

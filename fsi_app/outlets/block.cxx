@@ -49,11 +49,12 @@ PetscErrorCode OutletsBlock::ReadOptions(std::map<std::string, std::string> &pro
   else groups = {"<group>"}; /* -help: the pattern */
   for (const std::string &g : groups) {
     const std::string rName = "-outlets_" + g + "_resistance", rcrName = "-outlets_" + g + "_rcr";
-    PetscReal         v[4] = {0, 0, 0, 0}, w[5] = {0, 0, 0, 0, 0};
-    PetscInt          nr = 2, nrcr = 5;
-    PetscBool         isR = PETSC_FALSE, isRCR = PETSC_FALSE;
-    PetscCall(r.Reals(rName.c_str(), "the outlet's resistance: P = R Q + P_d; R,P_d (dyn s/cm^5, dyn/cm^2; P_d 0 if left out)", v, &nr, &isR, Any, PROBLEM));
-    PetscCall(r.Reals(rcrName.c_str(), "three-element Windkessel: P = R_p Q + Pi, C dPi/dt + (Pi - P_d)/R_d = Q; R_p,C,R_d,P_d,Pi_0 (dyn s/cm^5, cm^5/dyn, dyn s/cm^5, dyn/cm^2, dyn/cm^2; P_d 0 and Pi_0 = P_d if left out): Pi_0 the capacitor's pressure at t = 0", w, &nrcr, &isRCR, Any, PROBLEM));
+    std::vector<PetscReal> v, w; /* no model unless given */
+    PetscCall(r.Numbers(rName.c_str(), "the outlet's resistance: P = R Q + P_d; R,P_d (dyn s/cm^5, dyn/cm^2; P_d 0 if left out)", v, 2, "numbers separated by commas", PROBLEM));
+    PetscCall(r.Numbers(rcrName.c_str(), "three-element Windkessel: P = R_p Q + Pi, C dPi/dt + (Pi - P_d)/R_d = Q; R_p,C,R_d,P_d,Pi_0 (dyn s/cm^5, cm^5/dyn, dyn s/cm^5, dyn/cm^2, dyn/cm^2; P_d 0 and Pi_0 = P_d if left out): Pi_0 the capacitor's pressure at t = 0", w, 5, "numbers separated by commas", PROBLEM));
+    const PetscBool isR = (PetscBool)!v.empty(), isRCR = (PetscBool)!w.empty();
+    const PetscInt  nr = (PetscInt)v.size(), nrcr = (PetscInt)w.size();
+    v.resize(2, 0.0), w.resize(5, 0.0);
     const std::string      waveName = "-outlets_" + g + "_pressure_waveform", fourierName = "-outlets_" + g + "_pressure_fourier";
     char                   wave[PETSC_MAX_PATH_LEN] = "";
     std::vector<PetscReal> fourier;
@@ -187,13 +188,17 @@ PetscErrorCode OutletsBlock::FaceWeights(const Outlet &o, const PetscScalar *x, 
   PetscFunctionReturn(0);
 }
 
-/* d_t of the unknown at local offset `off` (0 in statics) and its coefficient in the Jacobian. */
-static PetscReal Rate(const TimeHistory *h, const PetscScalar *x, const std::vector<const PetscScalar *> &past, PetscInt off, PetscReal *coefficient)
+/* d/dt x_off = (c_0 x_off + sum_j c_j past_j[off]) / dt (0 in statics), and its derivative in x_off. */
+static PetscReal RateCoefficient(const TimeHistory *h)
 {
-  if (!h || past.empty()) return *coefficient = 0, 0.0;
+  return h && !h->past.empty() ? h->first[0] / h->dt : 0.0;
+}
+
+static PetscReal Rate(const TimeHistory *h, const PetscScalar *x, const std::vector<const PetscScalar *> &past, PetscInt off)
+{
+  if (!h || past.empty()) return 0.0;
   PetscReal r = h->first[0] * PetscRealPart(x[off]);
   for (size_t j = 0; j < past.size() && h->first[j + 1] != 0; j++) r += h->first[j + 1] * PetscRealPart(past[j][off]);
-  *coefficient = h->first[0] / h->dt;
   return r / h->dt;
 }
 
@@ -226,12 +231,11 @@ PetscErrorCode OutletsBlock::Residual(const PetscScalar *x, PetscScalar *f)
     }
     if (o.local < 0) continue;
     const PetscScalar *y = &x[o.local];
-    PetscReal          c;
     f[o.local + Q] += y[Q] - sum[2 * k];
     f[o.local + P] += y[P] - o.Rp * y[Q] - y[PI];
     if (o.model == OUTLET_RESISTANCE) f[o.local + PI] += y[PI] - o.Pd;
     else if (o.model == OUTLET_PRESSURE) f[o.local + PI] += y[PI] - o.pressure.Value(time);
-    else f[o.local + PI] += o.C * Rate(history, x, past, o.local + PI, &c) + (y[PI] - o.Pd) / o.Rd - y[Q];
+    else f[o.local + PI] += o.C * Rate(history, x, past, o.local + PI) + (y[PI] - o.Pd) / o.Rd - y[Q];
   }
   PetscCall(TimeHistoryRestorePast(history, past));
   PetscFunctionReturn(0);
@@ -239,10 +243,7 @@ PetscErrorCode OutletsBlock::Residual(const PetscScalar *x, PetscScalar *f)
 
 PetscErrorCode OutletsBlock::Jacobian(const PetscScalar *x, Mat J)
 {
-  std::vector<const PetscScalar *> past;
-
   PetscFunctionBegin;
-  PetscCall(TimeHistoryGetPast(history, past));
   for (const Outlet &o : outlets) {
     std::vector<PetscReal> b;
     const PetscInt         gQ = o.global + Q, gP = o.global + P;
@@ -255,15 +256,12 @@ PetscErrorCode OutletsBlock::Jacobian(const PetscScalar *x, Mat J)
       PetscCall(MatSetValues(J, 1, &gQ, 30, &velocity->global[30 * k], minus, ADD_VALUES));
     }
     if (o.local < 0) continue;
-    PetscReal      c;
-    const PetscInt rows[3] = {o.global + Q, o.global + P, o.global + PI};
-    Rate(history, x, past, o.local + PI, &c);
-    const PetscBool   rcr = (PetscBool)(o.model == OUTLET_RCR);
-    const PetscScalar capacitor = rcr ? o.C * c + 1 / o.Rd : 1.0, inflow = rcr ? -1.0 : 0.0;
+    const PetscInt    rows[3] = {o.global + Q, o.global + P, o.global + PI};
+    const PetscBool   rcr     = (PetscBool)(o.model == OUTLET_RCR);
+    const PetscScalar capacitor = rcr ? o.C * RateCoefficient(history) + 1 / o.Rd : 1.0, inflow = rcr ? -1.0 : 0.0;
     const PetscScalar A[9]      = {1, 0, 0, -o.Rp, 1, -1, inflow, 0, capacitor};
     PetscCall(MatSetValues(J, 3, rows, 3, rows, A, ADD_VALUES));
   }
-  PetscCall(TimeHistoryRestorePast(history, past));
   PetscFunctionReturn(0);
 }
 

@@ -156,7 +156,7 @@ static PetscErrorCode Solve(const Scene &sc, Blocks &b, DM dm, SNES snes, Vec x,
 
   CheckpointSeries checkpoints{sc.checkpoint, sc.checkpointKeep, {}};
   TimeLoop         loop;
-  loop.snes = snes, loop.history = &history, loop.steps = sc.Steps(), loop.maxCuts = sc.maxCuts, loop.dynamic = dynamic;
+  loop.snes = snes, loop.history = &history, loop.steps = sc.Steps(), loop.maxCuts = sc.maxCuts, loop.predictorOrder = sc.predictorOrder, loop.dynamic = dynamic;
   for (const Split &s : b.Splits()) loop.splits.push_back(s.name);
   loop.setTime = [&](PetscReal t) -> PetscErrorCode {
     PetscFunctionBegin;

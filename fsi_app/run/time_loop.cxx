@@ -48,6 +48,7 @@ static PetscErrorCode Advance(const TimeLoop &loop, PetscReal t, PetscInt depth,
   PetscCall(VecDuplicate(x, &x0));
   PetscCall(VecCopy(x, x0));
   PetscCall(loop.setTime(t + dt));
+  PetscCall(TimeHistoryExtrapolate(h, loop.predictorOrder, x));
   if (loop.predict) PetscCall(loop.predict(t + dt, x));
   PetscCall(SNESSolve(loop.snes, nullptr, x));
   PetscCall(SNESGetIterationNumber(loop.snes, &n));

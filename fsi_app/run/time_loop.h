@@ -18,6 +18,7 @@ struct TimeLoop {
   SNES                                       snes;
   TimeHistory                               *history; /* h.dt is the step; no past states in statics */
   PetscInt                                   steps, maxCuts;
+  PetscInt                                   predictorOrder; /* Newton's first iterate: the past states extrapolated (core/time_history.h) */
   PetscBool                                  dynamic;
   std::vector<std::string>                   splits;    /* named splits whose set-up each step's phases report */
   std::function<PetscErrorCode(PetscReal t)> setTime;   /* loads at time (or load fraction) t */
