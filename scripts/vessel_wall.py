@@ -53,7 +53,7 @@ class Wall:
         self.normals = vertex_normals(points, tris, rims)
         self.base = sorted(self.normals)
         self.slot = {p: s for s, p in enumerate(self.base)}
-        self.start, self.layers, self.step = len(points), layers, thickness / layers
+        self.start, self.step = len(points), thickness / layers
         for k in range(1, layers + 1):
             for p in self.base:
                 points.append(tuple(x + k * self.step * n for x, n in zip(points[p], self.normals[p])))

@@ -6,7 +6,6 @@ committed bifurcation_L0's lumen written as an STL and meshed back, against that
 import math
 
 from fsilib import *  # noqa: F401,F403 (the cases' shared runners, meshes and scenes)
-from fsi_vessels import BIFURCATION_GROUPS, bifurcation
 from testlib import between, case, main, run
 
 SCRIPT = os.path.join(TOP, "scripts", "stl-to-mesh")

@@ -20,6 +20,7 @@ APP = os.path.join(BUILD, "fsi_app", "fsi_app")
 WALL = ["-structure_region", "wall", "-structure_clamp", "wall_inlet_ring,wall_outlet_ring", "-snes_type", "ksponly",
         "-ksp_type", "cg", "-ksp_rtol", "1e-8"]
 TUBE_GROUPS = "fluid,wall,inlet,outlet,interface,wall_inlet_ring,wall_outlet_ring,outer_wall"
+BIFURCATION_GROUPS = "fluid,wall,inlet,outlet_ica,outlet_eca,interface,wall_inlet_ring,wall_ica_ring,wall_eca_ring,outer_wall"
 FSI = os.path.join(SCENES, "fsi_tube1_linear.opts")
 
 
@@ -289,6 +290,17 @@ def geo_defaults(geo):
         text = f.read()
     body = re.search(r"DefineConstant\[(.*?)\];", text, re.S).group(1)
     return {k: float(v) for k, v in re.findall(r"(\w+)\s*=\s*([-+0-9.eE]+)", body)}
+
+
+def bifurcation():
+    """meshes/bifurcation.geo's defaults and its openings: group -> (centre, unit axis, radius) for the
+    lumen's discs and (..., inner and outer radius) for the wall's rings."""
+    p = geo_defaults("bifurcation.geo")
+    tI, tE, w = math.radians(p["aI"]), math.radians(p["aE"]), p["wall"]
+    ends = {"inlet": ((0, 0, -p["Lc"]), (0, 0, 1), p["R"], "wall_inlet_ring"),
+            "outlet_ica": ((p["Li"] * math.sin(tI), 0, p["Li"] * math.cos(tI)), (math.sin(tI), 0, math.cos(tI)), p["rI"], "wall_ica_ring"),
+            "outlet_eca": ((-p["Le"] * math.sin(tE), 0, p["Le"] * math.cos(tE)), (-math.sin(tE), 0, math.cos(tE)), p["rE"], "wall_eca_ring")}
+    return p, ends, w
 
 
 def rates_h(e, meshes):
