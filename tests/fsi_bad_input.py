@@ -21,10 +21,34 @@ def mesh_errors():
     for args, msg in (([os.path.join(MESHES, "nothere.msh")], "mesh file '{}' does not exist or cannot be read (option -mesh)"),
                       ([os.path.join(MESHES, "tube.geo")], "mesh file '{}' is not a gmsh .msh file"),
                       ([os.path.join(MESHES, "cube_L0.msh"), "-require", "solid,interface"],
-                       "mesh file '{}' has no physical group 'interface', which this scene needs (the file has: solid, x0, x1")):
+                       "-require interface: mesh file '{}' has no physical group 'interface', which this scene needs (the file has: x0, x1, y0, y1, z0, z1, solid)")):
         for np in (1, 2):
             out = run([MESH_INFO, "-mesh"] + args, np, fail=True)
             assert msg.format(args[0]) in out, msg
+
+
+@case
+def mesh_group_faults():
+    """A group an option names that the mesh file does not have, one of the wrong dimension (the
+    fluid's inlet naming the fluid's cells) and one that is named but empty (in $PhysicalNames,
+    no element carrying it: PETSc makes no label of it, and the run said the file had no such
+    group): one sentence naming the option, the group and the file, on 1 and 2 ranks, exit
+    status nonzero, and nothing written (no series, report, checkpoint, nor their locks)."""
+    tmp = tempfile.mkdtemp()
+    empty = os.path.join(tmp, "empty_group.msh")
+    text = open(os.path.join(MESHES, "tube1_L0.msh")).read()
+    open(empty, "w").write(text.replace("$PhysicalNames\n8\n", '$PhysicalNames\n9\n2 99 "outlet_b"\n'))
+    out = os.path.join(tmp, "out")
+    os.mkdir(out)
+    files = ["-output", os.path.join(out, "s.xdmf"), "-report", os.path.join(out, "r.json"), "-checkpoint", os.path.join(out, "c.chk")]
+    for opts, msg in ((["-fluid_inlet", "inflow"], f"-fluid_inlet inflow: mesh file '{empty}' has no physical group 'inflow', which this scene needs (the file has: "),
+                      (["-fluid_inlet", "fluid"], f"-fluid_inlet fluid: the group holds cells, and the option takes a group of faces (mesh file '{empty}'; its groups of faces: inlet, outlet, interface, "),
+                      (["-fluid_inlet", "outlet_b"], f"-fluid_inlet outlet_b: the physical group 'outlet_b' of mesh file '{empty}' is empty (named, but no element belongs to it), and the option takes a group of faces"),
+                      (["-structure_clamp", "wall_inlet_ring,outlet_b"], f"-structure_clamp outlet_b: the physical group 'outlet_b' of mesh file '{empty}' is empty")):
+        for np in (1, 2):
+            refused([APP] + FSI_SCENE + ["-mesh", empty] + opts + files, msg, np)
+            assert os.listdir(out) == [], os.listdir(out)
+    shutil.rmtree(tmp)
 
 
 @case

@@ -10,21 +10,9 @@ import math
 from fsilib import *  # noqa: F401,F403 (the cases' shared runners, meshes and scenes)
 from testlib import between, case, main, run
 
-BIFURCATION_GROUPS = "fluid,wall,inlet,outlet_ica,outlet_eca,interface,wall_inlet_ring,wall_ica_ring,wall_eca_ring,outer_wall"
 # the committed meshes: groups, (fluid cells, wall cells, interface faces) as docs/meshes.md says
 VESSELS = {"bifurcation_L0.msh": (BIFURCATION_GROUPS, (19565, 19134, 5455)),
            "bend_L0.msh": (TUBE_GROUPS, (12321, 11233, 3358))}
-
-
-def bifurcation():
-    """The bifurcation's defaults and its openings: group -> (centre, unit axis, radius) for the
-    lumen's discs and (..., inner and outer radius) for the wall's rings."""
-    p = geo_defaults("bifurcation.geo")
-    tI, tE, w = math.radians(p["aI"]), math.radians(p["aE"]), p["wall"]
-    ends = {"inlet": ((0, 0, -p["Lc"]), (0, 0, 1), p["R"], "wall_inlet_ring"),
-            "outlet_ica": ((p["Li"] * math.sin(tI), 0, p["Li"] * math.cos(tI)), (math.sin(tI), 0, math.cos(tI)), p["rI"], "wall_ica_ring"),
-            "outlet_eca": ((-p["Le"] * math.sin(tE), 0, p["Le"] * math.cos(tE)), (-math.sin(tE), 0, math.cos(tE)), p["rE"], "wall_eca_ring")}
-    return p, ends, w
 
 
 def bend():

@@ -20,6 +20,7 @@ APP = os.path.join(BUILD, "fsi_app", "fsi_app")
 WALL = ["-structure_region", "wall", "-structure_clamp", "wall_inlet_ring,wall_outlet_ring", "-snes_type", "ksponly",
         "-ksp_type", "cg", "-ksp_rtol", "1e-8"]
 TUBE_GROUPS = "fluid,wall,inlet,outlet,interface,wall_inlet_ring,wall_outlet_ring,outer_wall"
+BIFURCATION_GROUPS = "fluid,wall,inlet,outlet_ica,outlet_eca,interface,wall_inlet_ring,wall_ica_ring,wall_eca_ring,outer_wall"
 FSI = os.path.join(SCENES, "fsi_tube1_linear.opts")
 
 
@@ -246,6 +247,33 @@ def planar_area(P, normal):
     return abs(sum(jac(*q) for q in ((1 / 6, 1 / 6), (2 / 3, 1 / 6), (1 / 6, 2 / 3))) / 6)
 
 
+# Dunavant's 7-point rule on the triangle (barycentric points, weights summing to 1), exact for
+# polynomials of degree 5
+TRI_RULE5 = [((1 / 3, 1 / 3, 1 / 3), 0.225)] + \
+    [(p, 0.132394152788506) for p in ((0.059715871789770, 0.470142064105115, 0.470142064105115), (0.470142064105115, 0.059715871789770, 0.470142064105115),
+                                      (0.470142064105115, 0.470142064105115, 0.059715871789770))] + \
+    [(p, 0.125939180544827) for p in ((0.797426985353087, 0.101286507323456, 0.101286507323456), (0.101286507323456, 0.797426985353087, 0.101286507323456),
+                                      (0.101286507323456, 0.101286507323456, 0.797426985353087))]
+
+
+def surface_area(P):
+    """The area of a 3- or 6-node triangle in space: |x_u x x_v| by Dunavant's rule (exact for a
+    straight triangle; for a curved one the integrand is smooth, not polynomial: 5e-9 relative
+    against a fine midpoint sum on a cylinder's triangle of legs a third of its radius)."""
+    if len(P) == 3:
+        n = vec_cross(vec_sub(P[1], P[0]), vec_sub(P[2], P[0]))
+        return 0.5 * math.sqrt(vec_dot(n, n))
+    area = 0.0
+    for (l0, l1, l2), w in TRI_RULE5:  # gmsh's 6-node triangle: vertices, then the edges (0,1), (1,2), (2,0)
+        dN1 = [-(4 * l0 - 1), 4 * l1 - 1, 0, 4 * (l0 - l1), 4 * l2, -4 * l2]
+        dN2 = [-(4 * l0 - 1), 0, 4 * l2 - 1, -4 * l1, 4 * l1, 4 * (l0 - l2)]
+        a = tuple(sum(dN1[i] * P[i][c] for i in range(6)) for c in range(3))
+        b = tuple(sum(dN2[i] * P[i][c] for i in range(6)) for c in range(3))
+        n = vec_cross(a, b)
+        area += w * 0.5 * math.sqrt(vec_dot(n, n))
+    return area
+
+
 def boundary_loops(triangles):
     """The vertex pairs on the boundary of a set of triangles (edges of one triangle only)."""
     count = {}
@@ -262,6 +290,17 @@ def geo_defaults(geo):
         text = f.read()
     body = re.search(r"DefineConstant\[(.*?)\];", text, re.S).group(1)
     return {k: float(v) for k, v in re.findall(r"(\w+)\s*=\s*([-+0-9.eE]+)", body)}
+
+
+def bifurcation():
+    """meshes/bifurcation.geo's defaults and its openings: group -> (centre, unit axis, radius) for the
+    lumen's discs and (..., inner and outer radius) for the wall's rings."""
+    p = geo_defaults("bifurcation.geo")
+    tI, tE, w = math.radians(p["aI"]), math.radians(p["aE"]), p["wall"]
+    ends = {"inlet": ((0, 0, -p["Lc"]), (0, 0, 1), p["R"], "wall_inlet_ring"),
+            "outlet_ica": ((p["Li"] * math.sin(tI), 0, p["Li"] * math.cos(tI)), (math.sin(tI), 0, math.cos(tI)), p["rI"], "wall_ica_ring"),
+            "outlet_eca": ((-p["Le"] * math.sin(tE), 0, p["Le"] * math.cos(tE)), (-math.sin(tE), 0, math.cos(tE)), p["rE"], "wall_eca_ring")}
+    return p, ends, w
 
 
 def rates_h(e, meshes):

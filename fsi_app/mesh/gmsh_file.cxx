@@ -39,6 +39,10 @@ struct GmshScan {
   long                                      number  = 0;
   bool                                      partial = false; /* the last line read ends without a newline */
   std::set<std::pair<long long, long long>> entities;        /* (dimension, tag) of $Entities */
+  std::map<std::pair<long long, long long>, std::vector<long long>> physical; /* (dimension, entity tag) -> its physical tags */
+  std::map<std::pair<long long, long long>, long long>              count;    /* (dimension, entity tag) -> its elements */
+  std::vector<GmshGroup>                                            names;    /* $PhysicalNames, elements 0 until counted */
+  std::vector<long long>                                            nameTags; /* the physical tag of each name */
   bool                                      hasEntities = false;
   long long                                 bytes = 0; /* the file's size */
   long long                                 nodeMin = 1, tetrahedra = 0, curved = 0; /* first- and second-order tetrahedra */
@@ -117,6 +121,7 @@ struct GmshScan {
   }
 
   std::string Format();
+  std::string PhysicalNames();
   std::string Entities();
   std::string Nodes();
   std::string Elements();
@@ -130,6 +135,21 @@ std::string GmshScan::Format()
   return End("$EndMeshFormat");
 }
 
+std::string GmshScan::PhysicalNames()
+{
+  std::vector<long long> n, h;
+
+  if (!Next()) return Cut();
+  if (!Integers(1, n) || n[0] < 0) return At("the $PhysicalNames header must be: numPhysicalNames");
+  for (long long i = 0; i < n[0]; i++) {
+    if (!Next()) return Cut();
+    const size_t open = line.find('"'), close = line.rfind('"');
+    if (!Integers(2, h) || h[0] < 0 || h[0] > 3 || open == std::string::npos || close == open) return At("a physical name's line must be: dimension tag \"name\"");
+    names.push_back({line.substr(open + 1, close - open - 1), (int)h[0], 0}), nameTags.push_back(h[1]);
+  }
+  return End("$EndPhysicalNames");
+}
+
 std::string GmshScan::Entities()
 {
   std::vector<long long> count, tag;
@@ -139,7 +159,15 @@ std::string GmshScan::Entities()
   for (long long dim = 0; dim < 4; dim++)
     for (long long i = 0; i < count[dim]; i++) {
       if (!Next()) return Cut();
+      /* a point: tag x y z, a curve, surface or volume: tag and its bounding box; then the
+         number of physical tags and the tags */
+      const size_t at = dim ? 7 : 4;
       if (!Integers(1, tag)) return At("an entity line starts with its tag");
+      std::vector<long long> &p = physical[{dim, tag[0]}];
+      long long               n;
+      if (tok.size() <= at || !Integer(tok[at], n) || n < 0 || tok.size() <= at + n) return At("the entity's number of physical tags and the tags must follow its coordinates");
+      for (long long k = 0; k < n; k++)
+        if (!Integer(tok[at + 1 + k], p.emplace_back())) return At("physical tag '" + tok[at + 1 + k] + "' is not an integer");
       entities.insert({dim, tag[0]});
     }
   hasEntities = true;
@@ -216,6 +244,7 @@ std::string GmshScan::Elements()
     if (const std::string s = Entity(h[0], h[1]); !s.empty()) return s;
     const auto type = ElementNodes.find(h[2]);
     if (type == ElementNodes.end()) return At("element type " + std::to_string(h[2]) + ": fsi_app reads tetrahedra of first order (type 4, with triangles 2 and lines 1) or second order (11, with 9 and 8), and points (15); mesh with gmsh -order 1 or -order 2");
+    count[{h[0], h[1]}] += h[3];
     if (h[2] == 4) tetrahedra += h[3];
     if (h[2] == 11) curved += h[3];
     if (tetrahedra && curved) return At("the file has tetrahedra of first order (type 4) and of second order (11): mesh it with one -order");
@@ -233,7 +262,7 @@ std::string GmshScan::Elements()
   return End("$EndElements");
 }
 
-/* A section fsi_app does not check ($PhysicalNames, $Comments, ...): up to its end marker. */
+/* A section fsi_app does not check ($Comments, $Periodic, ...): up to its end marker. */
 std::string GmshScan::Skip()
 {
   const std::string marker = "$End" + section.substr(1);
@@ -242,7 +271,7 @@ std::string GmshScan::Skip()
   return Cut();
 }
 
-std::string GmshFileProblem(const std::string &file, int *order, std::vector<double> *bent)
+std::string GmshFileProblem(const std::string &file, int *order, std::vector<double> *bent, std::vector<GmshGroup> *groups)
 {
   struct stat st;
   /* a FIFO would block the open, a device (/dev/zero) feed one endless line */
@@ -260,7 +289,8 @@ std::string GmshFileProblem(const std::string &file, int *order, std::vector<dou
     if (s.line.empty()) continue;
     if (s.line[0] != '$') return s.At("expected a section ($Name), found '" + s.line + "'");
     s.section = s.line;
-    if (s.line == "$Entities") why = s.Entities();
+    if (s.line == "$PhysicalNames") why = s.PhysicalNames();
+    else if (s.line == "$Entities") why = s.Entities();
     else if (s.line == "$Nodes") why = s.Nodes(), nodes = true;
     else if (s.line == "$Elements") why = nodes ? s.Elements() : s.At("$Elements before $Nodes"), elements = true;
     else why = s.Skip();
@@ -269,6 +299,12 @@ std::string GmshFileProblem(const std::string &file, int *order, std::vector<dou
   if (!nodes || !elements) return "mesh file '" + file + "' has no " + (nodes ? "$Elements" : "$Nodes") + " section: the file is truncated or not a mesh";
   if (!s.tetrahedra && !s.curved) return "mesh file '" + file + "' has no tetrahedra (element type 4 or 11): fsi_app solves on 3-D tetrahedral meshes";
   if (order) *order = s.curved ? 2 : 1;
+  if (groups) { /* a group's elements: those of the entities of its dimension that carry its tag */
+    for (size_t g = 0; g < s.names.size(); g++)
+      for (const auto &[entity, tags] : s.physical)
+        if (entity.first == s.names[g].dim && std::count(tags.begin(), tags.end(), s.nameTags[g])) s.names[g].elements += s.count[entity];
+    *groups = s.names;
+  }
   return "";
 }
 

@@ -17,7 +17,13 @@ namespace fsi {
    points that name nodes of $Nodes, every block names an entity of $Entities, it has a
    tetrahedron, and no section is cut off. *order (if asked) is then the elements' order, and
    *bent (if asked) the edges of second-order tetrahedra that are curved: 9 numbers each, the
-   edge's two vertices (the smaller first, lexicographically) and its node. */
-std::string GmshFileProblem(const std::string &file, int *order = nullptr, std::vector<double> *bent = nullptr);
+   edge's two vertices (the smaller first, lexicographically) and its node; *groups (if asked)
+   the physical groups of $PhysicalNames with their elements. */
+struct GmshGroup {
+  std::string name;
+  int         dim;      /* 0 points, 1 lines, 2 faces, 3 cells */
+  long long   elements; /* of the entities of that dimension carrying the group */
+};
+std::string GmshFileProblem(const std::string &file, int *order = nullptr, std::vector<double> *bent = nullptr, std::vector<GmshGroup> *groups = nullptr);
 
 } // namespace fsi

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <set>
 
 namespace fsi {
 
@@ -46,20 +47,44 @@ PetscErrorCode OwnedPoints(DM dm, std::vector<char> &owned)
   PetscFunctionReturn(0);
 }
 
-/* The names of the labels that came from physical groups (for error messages). */
-static std::string GroupNames(DM dm)
+/* The names of the file's groups holding elements of dimension dim (-1: every name), for error
+   messages. */
+static std::string GroupNames(const std::vector<GmshGroup> &groups, int dim)
 {
-  PetscInt    n;
-  std::string names;
-  DMGetNumLabels(dm, &n);
-  for (PetscInt i = 0; i < n; i++) {
-    const char *name;
-    DMGetLabelName(dm, i, &name);
-    const std::string s(name);
-    if (s == "depth" || s == "celltype") continue;
-    names += (names.empty() ? "" : ", ") + s;
-  }
+  std::string           names;
+  std::set<std::string> seen; /* a name may stand for groups of several dimensions */
+  for (const auto &g : groups)
+    if ((dim < 0 || (g.dim == dim && g.elements)) && seen.insert(g.name).second) names += (names.empty() ? "" : ", ") + g.name;
   return names.empty() ? "none" : names;
+}
+
+/* Why the file's groups cannot serve `uses` (one sentence naming the option, the group and the
+   file; "" if they can): each group an option names is in the file, holds elements, and holds
+   those of the dimension the option takes; options of one role name different groups. The
+   file's own counts, not PETSc's labels: PETSc makes no label of an empty group, and a
+   missing label cannot tell a missing group from an empty one or from one of lines. */
+static std::string GroupProblem(const std::string &file, const std::vector<GmshGroup> &groups, const std::vector<GroupUse> &uses)
+{
+  static const char *const holds[] = {"points", "lines", "faces", "cells"};
+  for (const auto &u : uses) {
+    const std::string use = u.option + " " + u.group + ": ";
+    long long         n[4] = {0, 0, 0, 0};
+    bool              named = false;
+    for (const auto &g : groups)
+      if (g.name == u.group) named = true, n[g.dim] += g.elements;
+    const long long all = n[0] + n[1] + n[2] + n[3], fit = u.dim ? n[u.dim] : n[2] + n[3];
+    const char     *takes = u.dim ? holds[u.dim] : "faces or cells";
+    if (u.optional && !all) continue;
+    if (!named) return use + "mesh file '" + file + "' has no physical group '" + u.group + "', which this scene needs (the file has: " + GroupNames(groups, -1) + ")";
+    if (!all) return use + "the physical group '" + u.group + "' of mesh file '" + file + "' is empty (named, but no element belongs to it), and the option takes a group of " + takes;
+    if (!fit) {
+      const int has = n[3] ? 3 : n[2] ? 2 : n[1] ? 1 : 0;
+      return use + "the group holds " + holds[has] + ", and the option takes a group of " + takes + " (mesh file '" + file + "'; its groups of " + takes + ": " + GroupNames(groups, u.dim ? (int)u.dim : -1) + ")";
+    }
+    for (const auto &v : uses)
+      if (!u.role.empty() && u.role == v.role && u.option != v.option && u.group == v.group) return u.option + " " + u.group + " and " + v.option + " " + v.group + " name the same group: the " + u.role + " must be different groups";
+  }
+  return "";
 }
 
 /* Cells to ranks: METIS k-way on the dual graph (cells sharing a face), computed where the
@@ -187,7 +212,11 @@ PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, PetscInt order, 
   std::vector<double> bent;
 
   PetscFunctionBegin;
-  PetscCall(CheckOnRankZero(comm, PETSC_ERR_FILE_UNEXPECTED, [&]() { return GmshFileProblem(file, &fileOrder, order == 1 ? nullptr : &bent); })); /* where PETSc reads it */
+  PetscCall(CheckOnRankZero(comm, PETSC_ERR_FILE_UNEXPECTED, [&]() { /* where PETSc reads it */
+    std::vector<GmshGroup> groups;
+    const std::string      why = GmshFileProblem(file, &fileOrder, order == 1 ? nullptr : &bent, &groups);
+    return why.empty() ? GroupProblem(file, groups, uses) : why;
+  }));
   PetscCallMPI(MPI_Bcast(&fileOrder, 1, MPI_INT, 0, comm));
   PetscCheck(order != 2 || fileOrder == 2, comm, PETSC_ERR_ARG_INCOMP, "-mesh_order 2: mesh file '%s' has first-order cells only; make it with gmsh -order 2 (scripts/make-meshes NAME LEVEL 2)", file.c_str());
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-dm_plex_gmsh_use_regions", &set));
@@ -195,19 +224,6 @@ PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, PetscInt order, 
   PetscCall(PetscOptionsSetValue(nullptr, "-dm_plex_gmsh_highorder", "false")); /* the vertices; the curved edges below */
   PetscCall(DMPlexCreateGmshFromFile(comm, file.c_str(), PETSC_TRUE, dm));
   PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));
-  static const char *const holds[] = {"", "", "faces", "cells"};
-  for (const auto &u : uses) {
-    PetscInt n[4] = {0};
-    PetscCall(CountLabel(*dm, u.group, 3, &n[3]));
-    PetscCall(CountLabel(*dm, u.group, 2, &n[2]));
-    if (u.optional && n[3] + n[2] == 0) continue;
-    PetscCheck(n[3] + n[2] > 0, comm, PETSC_ERR_ARG_WRONG, "mesh file '%s' has no physical group '%s', which this scene needs (the file has: %s)", file.c_str(), u.group.c_str(), GroupNames(*dm).c_str());
-    PetscCheck(!u.dim || n[u.dim] > 0, comm, PETSC_ERR_ARG_WRONG, "%s %s: the group holds %s, and the option takes a group of %s (the file's groups: %s)", u.option.c_str(), u.group.c_str(), holds[u.dim == 2 ? 3 : 2], holds[u.dim],
-               GroupNames(*dm).c_str());
-    for (const auto &v : uses)
-      PetscCheck(u.role.empty() || u.role != v.role || u.option == v.option || u.group != v.group, comm, PETSC_ERR_ARG_WRONG, "%s %s and %s %s name the same group: the %s must be different groups", u.option.c_str(), u.group.c_str(), v.option.c_str(),
-                 v.group.c_str(), u.role.c_str());
-  }
   PetscCall(DistributeWithMetis(dm, regions));
   if (fileOrder == 2 && order != 1) PetscCall(AttachCurvedEdges(comm, bent, *dm));
   PetscFunctionReturn(0);

@@ -11,7 +11,7 @@ namespace fsi {
 
 /* A physical group that an option names, and what the option needs of it: cells (dim 3) or
    faces (dim 2; 0: either). Options of the same nonempty role (the regions, the fluid's boundary
-   conditions) must name different groups. An optional group may be absent from the file. */
+   conditions) must name different groups. An optional group may be absent from the file, or empty. */
 struct GroupUse {
   std::string group, option;
   PetscInt    dim      = 0;
@@ -19,9 +19,9 @@ struct GroupUse {
   bool        optional = false;
 };
 
-/* Read `file` (gmsh .msh 4.1 ASCII, checked first by GmshFileProblem), check that every group of
-   `uses` exists and holds entities of the dimension its option needs, and that options of one
-   role name different groups, and distribute the cells over the ranks of `comm` (METIS on the
+/* Read `file` (gmsh .msh 4.1 ASCII, checked first by GmshFileProblem), after checking in the
+   file that every group of `uses` exists, is not empty and holds elements of the dimension its
+   option needs, and that options of one role name different groups; and distribute the cells over the ranks of `comm` (METIS on the
    cell dual graph, balancing the cells of each of `regions` when there are several). Errors
    name the file, the line or the option and group, and what the file has. `order` is the
    cells' geometry (-mesh_order): 2 curved by the file's second-order nodes (which it must

@@ -217,10 +217,10 @@ PetscErrorCode RunScene()
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "-help: the options are listed above; nothing was solved (run without -help to solve; the splits' inner solvers list their options in -ksp_view)\n"));
   else {
     PetscCall(CheckUnusedOptions(PETSC_COMM_WORLD, b.Prefixes()));
+    PetscCall(ClaimSceneFiles(sc));
     PetscCall(Solve(sc, b, dm, snes, x, report));
+    PetscCall(ReleaseSceneFiles(sc));
   }
-  if (sc.output[0]) PetscCall(ReleaseFile(PETSC_COMM_WORLD, sc.output));
-  if (sc.checkpoint[0]) PetscCall(ReleaseFile(PETSC_COMM_WORLD, sc.checkpoint));
   PetscCall(VecDestroy(&x));
   PetscCall(SNESDestroy(&snes));
   PetscCall(DMDestroy(&dm));

@@ -50,7 +50,6 @@ PetscErrorCode CheckSceneFiles(const Scene &sc)
     PetscCheck(xdmf.size() > 5 && xdmf.substr(xdmf.size() - 5) == ".xdmf", PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-output %s: name the file <name>.xdmf (the data go to <name>.h5)", sc.output);
     PetscCall(CheckWritable(PETSC_COMM_WORLD, "-output", xdmf));
     PetscCall(CheckWritable(PETSC_COMM_WORLD, "-output", h5));
-    PetscCall(ClaimFile(PETSC_COMM_WORLD, "-output", xdmf)); /* a second run on the same series would destroy it */
     if (sc.restart[0])
       PetscCall(CheckOnRankZero(PETSC_COMM_WORLD, PETSC_ERR_FILE_OPEN, [&]() {
         return std::ifstream(h5) ? std::string() : "-output " + xdmf + " with -restart: the series continues in " + h5 + ", which is not there; give the -output of the run that wrote the checkpoint";
@@ -58,8 +57,23 @@ PetscErrorCode CheckSceneFiles(const Scene &sc)
   }
   if (sc.checkpoint[0]) PetscCall(CheckWritable(PETSC_COMM_WORLD, "-checkpoint", sc.checkpoint));
   if (sc.report[0]) PetscCall(CheckWritable(PETSC_COMM_WORLD, "-report", sc.report, false)); /* /dev/stdout will do */
-  if (sc.checkpoint[0]) PetscCall(ClaimFile(PETSC_COMM_WORLD, "-checkpoint", sc.checkpoint)); /* two runs writing one checkpoint would restart from each other's steps */
   if (sc.restart[0] && CanonicalPath(sc.restart) != CanonicalPath(sc.checkpoint)) PetscCall(CheckNotClaimed(PETSC_COMM_WORLD, "-restart", sc.restart));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ClaimSceneFiles(const Scene &sc)
+{
+  PetscFunctionBegin;
+  if (sc.output[0]) PetscCall(ClaimFile(PETSC_COMM_WORLD, "-output", sc.output));             /* a second run on the same series would destroy it */
+  if (sc.checkpoint[0]) PetscCall(ClaimFile(PETSC_COMM_WORLD, "-checkpoint", sc.checkpoint)); /* two runs writing one checkpoint would restart from each other's steps */
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ReleaseSceneFiles(const Scene &sc)
+{
+  PetscFunctionBegin;
+  if (sc.output[0]) PetscCall(ReleaseFile(PETSC_COMM_WORLD, sc.output));
+  if (sc.checkpoint[0]) PetscCall(ReleaseFile(PETSC_COMM_WORLD, sc.checkpoint));
   PetscFunctionReturn(0);
 }
 
