@@ -30,8 +30,14 @@ bifurcation scenes/carotid_bifurcation.opts for one cardiac cycle (184 steps of 
             Writes bench/results/arterial_bifurcation.{csv,cmd,png} and, with ParaView, the WSS
             on the lumen and the wall's displacement at peak systole
             (arterial_bifurcation_wss.png, arterial_bifurcation_displacement.png).
+subdomains  The bifurcation's first 2 time steps with the wall split into 2, 8, 32, 128 GDSW
+            subdomains (-structure_subdomains per rank, 2 ranks), the two-level GDSW of the
+            solver file against one-level Schwarz on the same subdomains
+            (-fieldsplit_structure_pc_gdsw_coarse_space none): FGMRES iterations per Newton step
+            and Newton steps, what a user with more cores (one subdomain per core) can expect.
+            Writes bench/results/arterial_bifurcation_subdomains.{csv,cmd,png}.
 
-Usage: scripts/bench_arterial.py reflection|carotid|support|bifurcation [--app PATH] [--work DIR] [--plot]"""
+Usage: scripts/bench_arterial.py reflection|carotid|support|bifurcation|subdomains [--app PATH] [--work DIR] [--plot]"""
 import csv
 import glob
 import json
@@ -42,9 +48,9 @@ import subprocess
 import sys
 import tempfile
 
-from benchlib import ENV, TOP, check_command_line, loadavg, write_results
+from benchlib import ENV, TOP, check_command_line, loadavg, run_report, step_costs, write_results
 
-check_command_line(__doc__, valued=("--app", "--work"), flags=("--plot",), modes=("reflection", "carotid", "support", "bifurcation"))
+check_command_line(__doc__, valued=("--app", "--work"), flags=("--plot",), modes=("reflection", "carotid", "support", "bifurcation", "subdomains"))
 OUT = os.path.join(TOP, "bench", "results", "arterial_")
 MMHG, PREF, PERIOD = 1333.2, 80.0, 0.92  # the carotid scene's pressures are relative to 80 mmHg
 L, RI, RO, RHO = 2.5, 0.15, 0.21, 1.0     # tube #1
@@ -285,8 +291,41 @@ def plot_bifurcation():
         render(work, "wall", "displacement", OUT + "bifurcation_displacement.png", 5, "wall displacement at peak systole (cm), warped 5x")
 
 
+def subdomains():
+    tmp = tempfile.mkdtemp()
+    base = f"mpiexec -n 2 {app()} -options_file scenes/carotid_bifurcation.opts -options_file scenes/fsi_facsi_lu_fluid.opts -t_final 0.01"
+    load, rows, cmds = loadavg(), [], []
+    for total in (2, 8, 32, 128):
+        for coarse in ("gdsw", "none"):
+            cmd = base + f" -structure_subdomains {total // 2}" + (" -fieldsplit_structure_pc_gdsw_coarse_space none" if coarse == "none" else "")
+            r = run_report(cmd + f" -report {tmp}/r.json", f"{tmp}/r.json")
+            row = {"subdomains": total, "coarse_space": coarse, **(step_costs(r) if r else {"converged": 0})}
+            print(row)
+            rows.append(row)
+            cmds.append(cmd.replace(app(), "install/bin/fsi_app") + " -report r.json")
+    write_results(OUT + "bifurcation_subdomains", rows, cmds, "scripts/bench_arterial.py subdomains", load)
+    shutil.rmtree(tmp)
+    plot_subdomains()
+
+
+def plot_subdomains():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = list(csv.DictReader(open(OUT + "bifurcation_subdomains.csv")))
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for coarse, label in (("gdsw", "GDSW (two levels)"), ("none", "one-level Schwarz")):
+        mine = [r for r in rows if r["coarse_space"] == coarse and r.get("gmres_per_newton")]
+        ax.plot([int(r["subdomains"]) for r in mine], [float(r["gmres_per_newton"]) for r in mine], "o-", label=label)
+    ax.set(xscale="log", xlabel="wall subdomains", ylabel="FGMRES iterations per Newton step",
+           title="carotid bifurcation (arterial wall), FaCSI: the wall's preconditioner")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(OUT + "bifurcation_subdomains.png", dpi=120)
+
+
 if __name__ == "__main__":
     mode = sys.argv[1]
     run, plot = {"reflection": (reflection, plot_reflection), "carotid": (carotid, plot_carotid), "support": (support, plot_support),
-                 "bifurcation": (bifurcation, plot_bifurcation)}[mode]
+                 "bifurcation": (bifurcation, plot_bifurcation), "subdomains": (subdomains, plot_subdomains)}[mode]
     plot() if "--plot" in sys.argv else run()
