@@ -203,6 +203,7 @@ def option_faults():
     probes21 = ",".join(f"0.09,0,{0.1 * i:g}" for i in range(21))
     cases = ((["-time_scheme", "bogus"], "-time_scheme bogus is not one of: backward_euler, bdf2"),
              (["-structure_pc_setup", "sometimes"], "-structure_pc_setup sometimes is not one of: every_newton, every_step, once"),
+             (["-fluid_pc_setup", "once"], "-fluid_pc_setup once is not one of: every_newton, every_step"),
              (["-structure_material", "rubber"], "-structure_material rubber is not one of:"),
              (["-fluid_inlet_pressure_shape", "square"], "-fluid_inlet_pressure_shape square is not one of: step, cosine"),
              (["-fluid_inlet_pressure_shape", "cosine", "-fluid_inlet_pressure_until", 0], "-fluid_inlet_pressure_shape cosine needs the hump's length: -fluid_inlet_pressure_until T with T > 0"),

@@ -217,6 +217,27 @@ def fsi_facsi_exact():
 
 
 @case
+def fsi_fluid_setup_reuse():
+    """-fluid_pc_setup every_step keeps the fluid split's preconditioner for a whole time step:
+    with FaCSI's fluid step factored by MUMPS (scenes/fsi_facsi_lu_fluid.opts) the run factors
+    once per time step instead of once per Newton step (-log_view's MatLUFactorNum count drops
+    by the Newton steps less the time steps; every other factorisation is the same in both), the
+    state stays MUMPS's, FGMRES needs at most 20 % more iterations."""
+    def run_with(policy):
+        r = fsi("-options_file", os.path.join(SCENES, "fsi_facsi_lu_fluid.opts"), "-t_final", 1.5e-3, "-fluid_pc_setup", policy, "-log_view")
+        r["factorisations"] = int(re.search(r"^MatLUFactorNum\s+(\d+)", r["out"], re.M).group(1))
+        return r
+    every, once = run_with("every_newton"), run_with("every_step")
+    steps = len(once["steps"])
+    print("LU factorisations", every["factorisations"], once["factorisations"], "Newton", every["newton"], once["newton"], "FGMRES", every["krylov"], once["krylov"])
+    assert every["newton"] == once["newton"] > steps == 3, (every["newton"], once["newton"])
+    assert every["factorisations"] - once["factorisations"] == every["newton"] - steps, (every["factorisations"], once["factorisations"])
+    between(once["krylov"] / every["krylov"], 1, 1.2, "FGMRES iterations, every_step / every_newton")
+    direct = fsi("-t_final", 1.5e-3)
+    between(abs(once["results"]["max_displacement"] / direct["results"]["max_displacement"] - 1), 0, 1e-6, "every_step / MUMPS max displacement")
+
+
+@case
 def fsi_facsi_gdsw():
     """FaCSI as composed in scenes/fsi_facsi.opts (GDSW on the structure, AMG on the geometry,
     SIMPLE with AMG on the fluid) reaches MUMPS's state in at most 25 GMRES iterations per

@@ -92,6 +92,10 @@ PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &probl
   PetscCall(r.String("-fluid_outlet", "groups of the outflow faces, comma separated, each an outlet: traction-free, or a 0D model of the outlets block", o.outlet, sizeof(o.outlet), PROBLEM));
   PetscCall(r.Real("-fluid_backflow_stabilization", "beta of the backflow term -beta rho (u.n)_- u.v on the outlets (Esmaily Moghadam et al. 2011): damps fluid re-entering through them; 0 turns it off", &o.backflow, {0, 1}, PROBLEM));
   PetscCall(r.Real("-fluid_wall_shear_from", "the wall shear stress's time average (tawss) and oscillatory shear index (osi) in the output are taken over [this time, t] (s)", &o.shearFrom, NonNegative, RUN));
+  {
+    const char *const policies[] = {"every_newton", "every_step", "SplitSetUp", "", nullptr}; /* SplitSetUp's order */
+    PetscCall(r.Choice("-fluid_pc_setup", "when the fluid split's preconditioner (FaCSI's fluid step) is rebuilt: every Newton step, or every time step from its first Newton step's matrices", policies, &o.pcSetUp, RUN));
+  }
   PetscCall(r.Bool("-fluid_shape_derivatives", "on a moving mesh, the fluid's Jacobian holds its derivative in the mesh displacement (exact Newton); false: quasi-Newton", &o.shapeDerivatives, RUN));
   n = 3;
   PetscBool set;

@@ -46,6 +46,7 @@ struct FluidOptions {
   char      inlet[64] = "inlet", outlet[256] = "outlet"; /* outlets: groups, comma separated */
   PetscReal backflow = 0.2;                /* beta of the backflow term on the outlets */
   PetscBool shapeDerivatives = PETSC_TRUE; /* on a moving mesh the Jacobian holds D_{d_f} R (exact Newton) */
+  PetscInt  pcSetUp          = SETUP_EVERY_NEWTON; /* its split's preconditioner rebuilt every Newton step or every time step (SplitSetUp) */
   std::vector<PetscReal> probes;           /* points (3 each) where the pressure is recorded */
   PetscReal   shearFrom = 0;               /* the wall shear stress's time average and OSI from this time */
   PetscReal   poiseuille[3] = {0, 0, 0};   /* verification: R, L, pressure drop */
@@ -57,6 +58,7 @@ class FluidBlock : public Block {
 public:
   explicit FluidBlock(const Scene &sc) : sc(sc) {}
   const char    *Name() const override { return "fluid"; }
+  SplitSetUp     SetUpPolicy() const override { return (SplitSetUp)opt.pcSetUp; }
   PetscErrorCode Wire(const std::vector<Block *> &scene) override;
   PetscErrorCode ReadOptions(std::map<std::string, std::string> &problem) override;
   PetscErrorCode Check() const override;
