@@ -7,8 +7,8 @@ ParaView 5.11's XDMF reader leaves the parts of a spatial collection unnamed, so
 read from a copy of the series that holds only it (written beside the file, then removed)."""
 import os
 import sys
-import xml.etree.ElementTree as ET
 
+from xdmf_part import part_copy
 from paraview.simple import (Clip, ColorBy, GetActiveViewOrCreate, GetColorTransferFunction, OpenDataFile, SaveScreenshot, Show, Text,
                              WarpByVector)
 
@@ -16,23 +16,12 @@ path = os.path.abspath(sys.argv[1])  # the reader resolves the .h5 beside an abs
 warp = float(sys.argv[4]) if len(sys.argv) > 4 else 10.0
 
 
-def part(name):
-    """A copy of the series with only the part `name` in each frame."""
-    tree = ET.parse(path)
-    for frame in tree.getroot().iter("Grid"):
-        if frame.get("CollectionType") == "Spatial":
-            for grid in list(frame.findall("Grid")):
-                if grid.get("Name") != name:
-                    frame.remove(grid)
-    copy = f"{path[:-5]}.{name}.xdmf"
-    tree.write(copy)
-    return copy
 
 
 view = GetActiveViewOrCreate("RenderView")
 view.ViewSize = [1200, 300]
 view.OrientationAxesVisibility = 0
-files, bounds = [part("fluid"), part("wall")], None
+files, bounds = [part_copy(path, "fluid"), part_copy(path, "wall")], None
 for name, copy in zip(("fluid", "wall"), files):
     series = OpenDataFile(copy)
     times = list(series.TimestepValues) or [0.0]

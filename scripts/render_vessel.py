@@ -4,26 +4,18 @@ surface at one time, the vessel seen from +y (its centre lines in the x-z plane)
 displacement times a factor; prints what ParaView read so a caller can check it.
     pvbatch scripts/render_vessel.py <file.xdmf> <out.png> <time> <part> <field> [warp] [title]
 part is fluid or wall; the fluid's surface is the lumen, where wss, tawss and osi live.
-ParaView 5.11's XDMF reader leaves the parts of a spatial collection unnamed, so the part is
-read from a copy of the series that holds only it (written beside the file, then removed)."""
+The part is read from a copy of the series that holds only it (scripts/xdmf_part.py)."""
 import os
 import sys
-import xml.etree.ElementTree as ET
 
+from xdmf_part import part_copy
 from paraview.simple import (ColorBy, ExtractSurface, GetActiveViewOrCreate, GetColorTransferFunction, OpenDataFile, SaveScreenshot, Show,
                              Text, WarpByVector)
 
 path, png, when, name, field = os.path.abspath(sys.argv[1]), sys.argv[2], float(sys.argv[3]), sys.argv[4], sys.argv[5]
 warp = float(sys.argv[6]) if len(sys.argv) > 6 else 1.0
 
-tree = ET.parse(path)
-for frame in tree.getroot().iter("Grid"):
-    if frame.get("CollectionType") == "Spatial":
-        for grid in list(frame.findall("Grid")):
-            if grid.get("Name") != name:
-                frame.remove(grid)
-copy = f"{path[:-5]}.{name}.xdmf"
-tree.write(copy)
+copy = part_copy(path, name)
 
 series = OpenDataFile(copy)
 steps = series.TimestepValues  # a float for a series of one frame
