@@ -57,6 +57,18 @@ L, RI, RO, RHO = 2.5, 0.15, 0.21, 1.0     # tube #1
 Z = (0.625, 1.25)
 
 
+def results(name):
+    """The rows of bench/results/arterial_<name>.csv."""
+    return list(csv.DictReader(open(OUT + name + ".csv")))
+
+
+def pyplot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
+
+
 def app():
     return sys.argv[sys.argv.index("--app") + 1] if "--app" in sys.argv else os.path.join(TOP, "install", "bin", "fsi_app")
 
@@ -100,10 +112,7 @@ def reflection():
 
 
 def plot_reflection():
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    rows = list(csv.DictReader(open(OUT + "reflection.csv")))
+    plt, rows = pyplot(), results("reflection")
     fig, ax = plt.subplots(figsize=(7, 4))
     for name, label in (("traction_free", "traction-free outlet"), ("resistance_zc", "resistance R = Z_c")):
         sel = [r for r in rows if r["outlet"] == name]
@@ -153,10 +162,7 @@ def cycles(rows):
 
 
 def plot_carotid():
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    rows = list(csv.DictReader(open(OUT + "carotid.csv")))
+    plt, rows = pyplot(), results("carotid")
     t = [float(r["t"]) for r in rows]
     fig, ax = plt.subplots(figsize=(8, 4))
     ax.plot(t, [float(r["P_mmHg"]) for r in rows], color="C3", label="outlet pressure P")
@@ -191,10 +197,7 @@ def support():
 
 
 def plot_support():
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    rows = list(csv.DictReader(open(OUT + "support.csv")))
+    plt, rows = pyplot(), results("support")
     k = [float(r["k_s"]) for r in rows]
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.plot(k, [float(r["wave_speed"]) for r in rows], "o-", label="measured (probes)")
@@ -251,7 +254,7 @@ def collect(work, load):
 def render(work, part, field, png, warp, title):
     """pvbatch scripts/render_vessel.py at peak systole (the inflow's largest), under a virtual X
     display; ParaView may abort on closing the display after it saved the picture."""
-    rows = list(csv.DictReader(open(OUT + "bifurcation.csv")))
+    rows = results("bifurcation")
     peak = max(rows, key=lambda r: float(r["Q_cca"]))["t"]
     cmd = ["xvfb-run", "-a", "-s", "-screen 0 1600x1200x24", "pvbatch", os.path.join(TOP, "scripts", "render_vessel.py"), os.path.join(work, "bif.xdmf"),
            png, peak, part, field, str(warp), title]
@@ -262,10 +265,7 @@ def plot_bifurcation():
     work = work_dir()
     if "--plot" in sys.argv and os.path.exists(os.path.join(work, "bif_boundaries.csv")):
         collect(work, None)
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    rows = list(csv.DictReader(open(OUT + "bifurcation.csv")))
+    plt, rows = pyplot(), results("bifurcation")
     t = [float(r["t"]) for r in rows]
     fig, ax = plt.subplots(1, 3, figsize=(15, 4))
     for key, label in (("cca", "CCA (inlet)"), ("ica", "ICA"), ("eca", "ECA")):
@@ -309,10 +309,7 @@ def subdomains():
 
 
 def plot_subdomains():
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    rows = list(csv.DictReader(open(OUT + "bifurcation_subdomains.csv")))
+    plt, rows = pyplot(), results("bifurcation_subdomains")
     fig, ax = plt.subplots(figsize=(6, 4))
     for coarse, label in (("gdsw", "GDSW (two levels)"), ("none", "one-level Schwarz")):
         mine = [r for r in rows if r["coarse_space"] == coarse and r.get("gmres_per_newton")]

@@ -34,7 +34,7 @@ PetscErrorCode WriteReport(const char *file, MPI_Comm comm, const RunReport &r)
   PetscCall(PetscFPrintf(comm, fp, "},\n  \"restarted_at_step\": %" PetscInt_FMT ",\n  \"steps\": [", r.restartedAt));
   for (size_t k = 0; k < r.steps.size(); k++) {
     const StepRecord &s = r.steps[k];
-    PetscCall(PetscFPrintf(comm, fp, "%s\n    {\"step\": %" PetscInt_FMT ", \"t\": %.10g, \"newton\": %" PetscInt_FMT ", \"krylov\": %" PetscInt_FMT ", \"cuts\": %" PetscInt_FMT ", \"reason\": \"%s\", ", k ? "," : "", s.step, (double)s.t, s.newton, s.krylov, s.cuts, SNESConvergedReasons[s.reason]));
+    PetscCall(PetscFPrintf(comm, fp, "%s\n    {\"step\": %" PetscInt_FMT ", \"t\": %.10g, \"newton\": %" PetscInt_FMT ", \"krylov\": %" PetscInt_FMT ", \"cuts\": %" PetscInt_FMT ", \"first_residual\": %.10e, \"reason\": \"%s\", ", k ? "," : "", s.step, (double)s.t, s.newton, s.krylov, s.cuts, (double)s.residual0, SNESConvergedReasons[s.reason]));
     PetscCall(WriteSeconds(comm, fp, s.phases));
     PetscCall(PetscFPrintf(comm, fp, ", \"peak_memory_mib\": %.1f}", s.phases.peakMiB));
   }

@@ -18,6 +18,7 @@ struct StepRecord {
   PetscInt            step = 0;
   PetscReal           t    = 0;
   PetscInt            newton = 0, krylov = 0, cuts = 0; /* summed over every attempt */
+  PetscReal           residual0 = -1; /* |F| at Newton's first iterate of the step's first attempt */
   SNESConvergedReason reason = SNES_CONVERGED_ITERATING;
   Phases              phases; /* of this step: seconds per phase, wall clock (total), peak memory so far */
 };

@@ -54,6 +54,11 @@ static PetscErrorCode Advance(const TimeLoop &loop, PetscReal t, PetscInt depth,
   PetscCall(SNESGetIterationNumber(loop.snes, &n));
   PetscCall(SNESGetLinearSolveIterations(loop.snes, &k));
   PetscCall(SNESGetConvergedReason(loop.snes, &rec.reason));
+  if (rec.residual0 < 0) {
+    const PetscReal *norms;
+    PetscCall(SNESGetConvergenceHistory(loop.snes, (PetscReal **)&norms, nullptr, nullptr));
+    rec.residual0 = norms[0];
+  }
   rec.newton += n, rec.krylov += k;
   if (rec.reason == SNES_CONVERGED_SNORM_RELATIVE) PetscCall(WarnIfStagnated(loop.snes, t + dt));
   *ok = (PetscBool)(rec.reason > 0);
