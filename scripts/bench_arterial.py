@@ -31,9 +31,9 @@ bifurcation scenes/carotid_bifurcation.opts for one cardiac cycle (184 steps of 
             on the lumen and the wall's displacement at peak systole
             (arterial_bifurcation_wss.png, arterial_bifurcation_displacement.png).
 subdomains  The bifurcation's first 2 time steps with the wall split into 2, 8, 32, 128 GDSW
-            subdomains (-structure_subdomains per rank, 2 ranks), the two-level GDSW of the
-            solver file against one-level Schwarz on the same subdomains
-            (-fieldsplit_structure_pc_gdsw_coarse_space none): FGMRES iterations per Newton step
+            subdomains (-structure_subdomains per rank, 2 ranks), with the GDSW and the RGDSW
+            coarse space and with none (one-level Schwarz) on the same subdomains
+            (-fieldsplit_structure_pc_gdsw_coarse_space gdsw|rgdsw|none): FGMRES iterations per Newton step
             and Newton steps, what a user with more cores (one subdomain per core) can expect.
             Writes bench/results/arterial_bifurcation_subdomains.{csv,cmd,png}.
 
@@ -291,13 +291,16 @@ def plot_bifurcation():
         render(work, "wall", "displacement", OUT + "bifurcation_displacement.png", 5, "wall displacement at peak systole (cm), warped 5x")
 
 
+COARSE_SPACES = {"gdsw": "GDSW (two levels)", "rgdsw": "RGDSW (two levels)", "none": "one-level Schwarz"}
+
+
 def subdomains():
     tmp = tempfile.mkdtemp()
     base = f"mpiexec -n 2 {app()} -options_file scenes/carotid_bifurcation.opts -options_file scenes/fsi_facsi_lu_fluid.opts -t_final 0.01"
     load, rows, cmds = loadavg(), [], []
     for total in (2, 8, 32, 128):
-        for coarse in ("gdsw", "none"):
-            cmd = base + f" -structure_subdomains {total // 2}" + (" -fieldsplit_structure_pc_gdsw_coarse_space none" if coarse == "none" else "")
+        for coarse in COARSE_SPACES:
+            cmd = base + f" -structure_subdomains {total // 2} -fieldsplit_structure_pc_gdsw_coarse_space {coarse}"
             r = run_report(cmd + f" -report {tmp}/r.json", f"{tmp}/r.json")
             row = {"subdomains": total, "coarse_space": coarse, **(step_costs(r) if r else {"converged": 0})}
             print(row)
@@ -311,7 +314,7 @@ def subdomains():
 def plot_subdomains():
     plt, rows = pyplot(), results("bifurcation_subdomains")
     fig, ax = plt.subplots(figsize=(6, 4))
-    for coarse, label in (("gdsw", "GDSW (two levels)"), ("none", "one-level Schwarz")):
+    for coarse, label in COARSE_SPACES.items():
         mine = [r for r in rows if r["coarse_space"] == coarse and r.get("gmres_per_newton")]
         ax.plot([int(r["subdomains"]) for r in mine], [float(r["gmres_per_newton"]) for r in mine], "o-", label=label)
     ax.set(xscale="log", xlabel="wall subdomains", ylabel="FGMRES iterations per Newton step",

@@ -94,6 +94,9 @@ public:
   /* Linear rows (a dynamic scene of linear blocks factors its operator once); rows that are
      the gradient of an energy (the critical-point line search applies). */
   virtual PetscBool Linear() const { return PETSC_FALSE; }
+  /* A Jacobian that depends on neither the state nor the time nor the step (the harmonic
+     extension's): assembled once, its values kept (core/constant_rows.h). */
+  virtual PetscBool ConstantJacobian() const { return PETSC_FALSE; }
   virtual PetscBool HasEnergy() const { return PETSC_FALSE; }
   /* The preconditioner of its rows: pc solves them (the whole system when the block is the
      scene's only one, its split of PCFIELDSPLIT otherwise) and dm holds exactly that split's

@@ -22,6 +22,7 @@ struct Scene {
   PetscInt   loadSteps = 1, maxCuts = 4;
   PetscInt   predictorOrder = 1; /* Newton's first iterate from the past states (core/time_history.h) */
   TimeScheme scheme    = BACKWARD_EULER;
+  PetscBool  keepConstant = PETSC_TRUE; /* the constant Jacobian blocks assembled once (core/constant_rows.h) */
   /* verification: each block's manufactured solution */
   PetscBool mms = PETSC_FALSE;
   /* files */

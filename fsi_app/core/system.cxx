@@ -2,10 +2,11 @@
 #include "system.h"
 #include "discretization/cells.h"
 #include "discretization/conditions.h"
+#include <algorithm>
 
 namespace fsi {
 
-static PetscLogEvent AssembleJacobian, LayOutJacobian;
+static PetscLogEvent AssembleJacobian, LayOutJacobian, RestoreConstantRows;
 
 static PetscErrorCode SystemResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
 {
@@ -74,6 +75,19 @@ static PetscErrorCode LayOut(const System &s, Mat P)
   PetscFunctionReturn(0);
 }
 
+/* P += the Jacobians of the blocks whose Jacobian is (or is not) constant */
+static PetscErrorCode AddJacobians(const System &s, const PetscScalar *x, Mat P, PetscBool constant)
+{
+  PetscFunctionBegin;
+  for (size_t k = 0; k < s.blocks.size(); k++) {
+    if (s.blocks[k]->ConstantJacobian() != constant) continue;
+    PetscCall(PetscLogEventBegin(s.jacobianEvent[k], 0, 0, 0, 0));
+    PetscCall(s.blocks[k]->Jacobian(x, P));
+    PetscCall(PetscLogEventEnd(s.jacobianEvent[k], 0, 0, 0, 0));
+  }
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode SystemJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
 {
   System            &s = *(System *)ctx;
@@ -88,12 +102,19 @@ static PetscErrorCode SystemJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
     PetscCall(PetscLogEventEnd(LayOutJacobian, P, 0, 0, 0));
   }
   s.laidOut = PETSC_TRUE;
-  PetscCall(MatZeroEntries(P));
-  for (size_t k = 0; k < s.blocks.size(); k++) {
-    PetscCall(PetscLogEventBegin(s.jacobianEvent[k], 0, 0, 0, 0));
-    PetscCall(s.blocks[k]->Jacobian(x, P));
-    PetscCall(PetscLogEventEnd(s.jacobianEvent[k], 0, 0, 0, 0));
+  if (s.constant.Kept()) {
+    PetscCall(PetscLogEventBegin(RestoreConstantRows, P, 0, 0, 0));
+    PetscCall(s.constant.Restore(P));
+    PetscCall(PetscLogEventEnd(RestoreConstantRows, P, 0, 0, 0));
+  } else {
+    PetscCall(MatZeroEntries(P));
+    PetscCall(AddJacobians(s, x, P, PETSC_TRUE));
+    if (s.keepConstant && std::any_of(s.blocks.begin(), s.blocks.end(), [](const Block *b) { return b->ConstantJacobian(); })) {
+      PetscCall(AssembleOperators(P, P)); /* the other ranks' shares of the constant rows arrive */
+      PetscCall(s.constant.Keep(P));
+    }
   }
+  PetscCall(AddJacobians(s, x, P, PETSC_FALSE));
   PetscCall(VecRestoreArrayRead(Xl, &x));
   PetscCall(PetscLogEventBegin(AssembleJacobian, P, 0, 0, 0));
   PetscCall(AssembleOperators(J, P));
@@ -107,6 +128,7 @@ PetscErrorCode SystemAttach(DM dm, System &s)
   if (!AssembleJacobian) {
     PetscCall(PetscLogEventRegister("AssembleJacobian", MAT_CLASSID, &AssembleJacobian));
     PetscCall(PetscLogEventRegister("LayOutJacobian", MAT_CLASSID, &LayOutJacobian));
+    PetscCall(PetscLogEventRegister("ConstantRows", MAT_CLASSID, &RestoreConstantRows));
   }
   s.residualEvent.resize(s.blocks.size());
   s.jacobianEvent.resize(s.blocks.size());

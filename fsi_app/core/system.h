@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/block.h"
+#include "core/constant_rows.h"
 #include <vector>
 
 namespace fsi {
@@ -16,6 +17,8 @@ struct System {
   PetscBool            laidOut = PETSC_FALSE; /* the matrix's pattern is set (SystemCreateMatrix) */
   SNES                 snes    = nullptr;     /* told of a residual with no value (an inverted cell on any rank) */
   std::vector<PetscLogEvent> residualEvent, jacobianEvent; /* per block: Residual_<block>, Jacobian_<block> */
+  PetscBool                  keepConstant = PETSC_TRUE;   /* the constant blocks' values kept (-jacobian_keep_constant) */
+  ConstantRows               constant;
 };
 
 /* The Jacobian's matrix, without storage yet: the first Jacobian evaluation lays it out with
@@ -27,8 +30,10 @@ struct System {
 PetscErrorCode SystemCreateMatrix(DM dm, Mat *J);
 
 /* The system's residual and Jacobian become dm's DMSNES local callbacks; `s` must outlive dm.
-   Each block's share is logged (-log_view: Residual_<block>, Jacobian_<block>, and
-   AssembleJacobian for the matrix's assembly across ranks). */
+   The blocks with a constant Jacobian are assembled at the first Jacobian only; later ones
+   start from their kept values. Each block's share is logged (-log_view: Residual_<block>,
+   Jacobian_<block>, ConstantRows for copying the kept values back, and AssembleJacobian for
+   the matrix's assembly across ranks). */
 PetscErrorCode SystemAttach(DM dm, System &s);
 
 } // namespace fsi

@@ -51,6 +51,7 @@ public:
   std::vector<PetscInt> SplitFields() const override { return {field}; }
   PetscInt              SplitPlace() const override { return 1; } /* the mesh follows the wall, the fluid the mesh */
   PetscBool             Linear() const override { return PETSC_TRUE; }
+  PetscBool             ConstantJacobian() const override { return PETSC_TRUE; }
   PetscBool             HasEnergy() const override { return PETSC_TRUE; }
 
   void           Output(std::vector<OutputPart> &parts) const override;

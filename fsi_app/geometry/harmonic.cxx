@@ -27,29 +27,44 @@ PetscErrorCode GeometryResidual(const GeometryForms &gb, const PetscScalar *x, P
   PetscFunctionReturn(0);
 }
 
+/* The stiffness acts on each component alone: one 10 x 10 block per component, so the
+   matrix stores no cross-component zeros (two thirds of a 30 x 30 cell block). */
+static void ComponentIndices(const PetscInt *idx, int i, PetscInt out[10])
+{
+  for (int a = 0; a < 10; a++) out[a] = idx[3 * a + i];
+}
+
 PetscErrorCode GeometryJacobian(const GeometryForms &gb, const PetscScalar *, Mat P)
 {
   PetscFunctionBegin;
   for (PetscInt k = 0; k < gb.cells.Size(); k++) {
     const CellGeometry &g = gb.cells.geom[k];
-    PetscReal           K[900] = {0};
+    PetscReal           K[100] = {0};
     for (PetscInt q = 0; q < gb.rule.nq; q++) {
       PetscReal       dN[10][3];
       const PetscReal w = ReferenceGradients(g, gb.rule, q, dN);
       for (int a = 0; a < 10; a++)
-        for (int b = 0; b < 10; b++) {
-          const PetscReal v = w * (dN[a][0] * dN[b][0] + dN[a][1] * dN[b][1] + dN[a][2] * dN[b][2]);
-          for (int i = 0; i < 3; i++) K[(3 * a + i) * 30 + 3 * b + i] += v;
-        }
+        for (int b = 0; b < 10; b++) K[10 * a + b] += w * (dN[a][0] * dN[b][0] + dN[a][1] * dN[b][1] + dN[a][2] * dN[b][2]);
     }
-    PetscCall(MatSetValues(P, 30, &gb.cells.rows[30 * k], 30, &gb.cells.global[30 * k], K, ADD_VALUES));
+    for (int i = 0; i < 3; i++) {
+      PetscInt rows[10], cols[10];
+      ComponentIndices(&gb.cells.rows[30 * k], i, rows);
+      ComponentIndices(&gb.cells.global[30 * k], i, cols);
+      PetscCall(MatSetValues(P, 10, rows, 10, cols, K, ADD_VALUES));
+    }
   }
   PetscFunctionReturn(0);
 }
 
 void GeometryCouplings(const GeometryForms &gb, Sparsity &s)
 {
-  for (PetscInt k = 0; k < gb.cells.Size(); k++) s.Couple(30, &gb.cells.rows[30 * k], 30, &gb.cells.global[30 * k]);
+  for (PetscInt k = 0; k < gb.cells.Size(); k++)
+    for (int i = 0; i < 3; i++) {
+      PetscInt rows[10], cols[10];
+      ComponentIndices(&gb.cells.rows[30 * k], i, rows);
+      ComponentIndices(&gb.cells.global[30 * k], i, cols);
+      s.Couple(10, rows, 10, cols);
+    }
 }
 
 } // namespace fsi
