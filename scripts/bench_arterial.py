@@ -283,7 +283,7 @@ def plot_bifurcation():
     ax2.set(ylabel="FGMRES iterations per Newton step")
     for a in ax[:2]:
         a.legend()
-    fig.suptitle("carotid bifurcation (bifurcation_L0, arterial wall, FaCSI + GDSW, 2 ranks)")
+    fig.suptitle("carotid bifurcation (bifurcation_L0, arterial wall, FaCSI + RGDSW on the wall, 2 ranks)")
     fig.tight_layout()
     fig.savefig(OUT + "bifurcation.png", dpi=120)
     if len(rows) == 184 and os.path.exists(os.path.join(work, "bif.xdmf")) and shutil.which("pvbatch"):  # peak systole is known once the cycle has run

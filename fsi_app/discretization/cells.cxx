@@ -146,6 +146,23 @@ void SetNodalValues(const FieldCells &cells, const std::function<void(const Pets
   }
 }
 
+PetscErrorCode AddElementMatrix(Mat P, PetscInt nr, const PetscInt rows[], PetscInt nc, const PetscInt cols[], const PetscScalar K[])
+{
+  constexpr PetscInt Max = 64;
+  PetscInt           order[Max], sorted[Max];
+  PetscScalar        Ks[Max * Max];
+
+  PetscFunctionBegin;
+  PetscCheck(nr <= Max && nc <= Max, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "an element matrix of %" PetscInt_FMT " x %" PetscInt_FMT ", more than %" PetscInt_FMT, nr, nc, Max);
+  for (PetscInt j = 0; j < nc; j++) order[j] = j;
+  std::sort(order, order + nc, [&](PetscInt a, PetscInt b) { return cols[a] < cols[b]; });
+  for (PetscInt j = 0; j < nc; j++) sorted[j] = cols[order[j]];
+  for (PetscInt i = 0; i < nr; i++)
+    for (PetscInt j = 0; j < nc; j++) Ks[i * nc + j] = K[i * nc + order[j]];
+  PetscCall(MatSetValues(P, nr, rows, nc, sorted, Ks, ADD_VALUES));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode AssembleOperators(Mat J, Mat P)
 {
   PetscFunctionBegin;

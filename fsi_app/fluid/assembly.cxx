@@ -309,10 +309,10 @@ PetscErrorCode FluidJacobian(const FluidForms &fb, const PetscScalar *x, Mat P)
         VolumeShapeDerivatives(fb, N, l, m, p, cGradN, w, wRate, b, db, S);
       }
     }
-    PetscCall(MatSetValues(P, n, idx, n, idx, K, ADD_VALUES));
+    PetscCall(AddElementMatrix(P, n, idx, n, idx, K));
     if (shape) {
       if (!cellFaces[k].empty()) FaceShapeDerivatives(fb, k, s.d, cellFaces[k], S);
-      PetscCall(MatSetValues(P, n, idx, 30, &fb.mesh->global[30 * k], S, ADD_VALUES));
+      PetscCall(AddElementMatrix(P, n, idx, 30, &fb.mesh->global[30 * k], S));
     }
   }
   if (fb.backflowBeta > 0)
@@ -321,7 +321,7 @@ PetscErrorCode FluidJacobian(const FluidForms &fb, const PetscScalar *x, Mat P)
       Gather(fb.velocity, face.k, x, ue);
       if (fb.mesh) Gather(*fb.mesh, face.k, x, de);
       BackflowFace(fb, face, ue, fb.mesh ? de : nullptr, ru, K);
-      PetscCall(MatSetValues(P, 30, &fb.velocity.global[30 * face.k], 30, &fb.velocity.global[30 * face.k], K, ADD_VALUES));
+      PetscCall(AddElementMatrix(P, 30, &fb.velocity.global[30 * face.k], 30, &fb.velocity.global[30 * face.k], K));
     }
   PetscCall(TimeHistoryRestorePast(fb.history, past));
   PetscFunctionReturn(0);

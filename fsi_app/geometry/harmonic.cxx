@@ -50,7 +50,7 @@ PetscErrorCode GeometryJacobian(const GeometryForms &gb, const PetscScalar *, Ma
       PetscInt rows[10], cols[10];
       ComponentIndices(&gb.cells.rows[30 * k], i, rows);
       ComponentIndices(&gb.cells.global[30 * k], i, cols);
-      PetscCall(MatSetValues(P, 10, rows, 10, cols, K, ADD_VALUES));
+      PetscCall(AddElementMatrix(P, 10, rows, 10, cols, K));
     }
   }
   PetscFunctionReturn(0);

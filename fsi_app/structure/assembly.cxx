@@ -267,20 +267,20 @@ PetscErrorCode StructureJacobian(const StructureForms &sb, const PetscScalar *x,
             for (int c = 0; c < 3; c++) row[3 * b + c] += G[a][i][c * 3] * dN[b][0] + G[a][i][c * 3 + 1] * dN[b][1] + G[a][i][c * 3 + 2] * dN[b][2];
         }
     }
-    PetscCall(MatSetValues(P, 30, &sb.cells.global[30 * k], 30, &sb.cells.global[30 * k], K, ADD_VALUES));
+    PetscCall(AddElementMatrix(P, 30, &sb.cells.global[30 * k], 30, &sb.cells.global[30 * k], K));
   }
   if (sb.follower && sb.pressure != 0)
     for (const CellFace &face : sb.loaded) {
       PetscReal de[30], K[900] = {0};
       Gather(sb.cells, face.k, x, de);
       PressureTangent(sb, face, de, K);
-      PetscCall(MatSetValues(P, 30, &sb.cells.global[30 * face.k], 30, &sb.cells.global[30 * face.k], K, ADD_VALUES));
+      PetscCall(AddElementMatrix(P, 30, &sb.cells.global[30 * face.k], 30, &sb.cells.global[30 * face.k], K));
     }
   if (sb.spring != 0 || sb.damper != 0)
     for (const CellFace &face : sb.supported) {
       PetscReal s[30] = {0}, re[30] = {0}, K[900] = {0};
       SupportTerms(sb, face, s, sb.spring + sb.damper * DamperRate(sb), re, K);
-      PetscCall(MatSetValues(P, 30, &sb.cells.global[30 * face.k], 30, &sb.cells.global[30 * face.k], K, ADD_VALUES));
+      PetscCall(AddElementMatrix(P, 30, &sb.cells.global[30 * face.k], 30, &sb.cells.global[30 * face.k], K));
     }
   PetscFunctionReturn(0);
 }
