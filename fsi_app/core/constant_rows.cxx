@@ -46,7 +46,18 @@ PetscErrorCode ConstantRows::Keep(Mat P)
     PetscCall(MatSeqAIJRestoreArrayRead(seq[p], &a));
     PetscCall(MatRestoreRowIJ(seq[p], 0, PETSC_FALSE, PETSC_FALSE, &m, &ia, &ja, &done));
   }
-  kept = true;
+  from = P;
+  PetscCall(MatGetNonzeroState(P, &pattern));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ConstantRows::KeptFor(Mat P, PetscBool *kept) const
+{
+  PetscObjectState now;
+
+  PetscFunctionBegin;
+  PetscCall(MatGetNonzeroState(P, &now));
+  *kept = (PetscBool)(from == P && now == pattern);
   PetscFunctionReturn(0);
 }
 

@@ -16,15 +16,17 @@ public:
   PetscErrorCode Keep(Mat P);
   /* P's values become those kept, zero elsewhere */
   PetscErrorCode Restore(Mat P) const;
-  bool           Kept() const { return kept; }
+  /* values kept from this P, in its present pattern (another matrix, or a new pattern, is assembled afresh) */
+  PetscErrorCode KeptFor(Mat P, PetscBool *kept) const;
 
 private:
   struct Runs { /* of one sequential AIJ part: consecutive value ranges and their values */
     std::vector<PetscInt>    start, length;
     std::vector<PetscScalar> values;
   };
-  Runs parts[2]; /* an MPIAIJ's diagonal and off-diagonal parts; a SeqAIJ is parts[0] alone */
-  bool kept = false;
+  Runs             parts[2]; /* an MPIAIJ's diagonal and off-diagonal parts; a SeqAIJ is parts[0] alone */
+  Mat              from = nullptr; /* not referenced: only compared */
+  PetscObjectState pattern = 0;
 };
 
 } // namespace fsi

@@ -102,7 +102,9 @@ static PetscErrorCode SystemJacobian(DM dm, Vec Xl, Mat J, Mat P, void *ctx)
     PetscCall(PetscLogEventEnd(LayOutJacobian, P, 0, 0, 0));
   }
   s.laidOut = PETSC_TRUE;
-  if (s.constant.Kept()) {
+  PetscBool kept;
+  PetscCall(s.constant.KeptFor(P, &kept));
+  if (kept) {
     PetscCall(PetscLogEventBegin(RestoreConstantRows, P, 0, 0, 0));
     PetscCall(s.constant.Restore(P));
     PetscCall(PetscLogEventEnd(RestoreConstantRows, P, 0, 0, 0));
