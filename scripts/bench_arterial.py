@@ -44,6 +44,7 @@ import json
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -258,7 +259,19 @@ def render(work, part, field, png, warp, title):
     peak = max(rows, key=lambda r: float(r["Q_cca"]))["t"]
     cmd = ["xvfb-run", "-a", "-s", "-screen 0 1600x1200x24", "pvbatch", os.path.join(TOP, "scripts", "render_vessel.py"), os.path.join(work, "bif.xdmf"),
            png, peak, part, field, str(warp), title]
-    print(subprocess.run(cmd, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True).stdout.splitlines()[:1])
+    log = os.path.join(work, f"render_{part}.log")  # a file, not a pipe: xvfb-run's X server inherits it and may outlive pvbatch
+    with open(log, "w") as f:
+        p = subprocess.Popen(cmd, env=ENV, stdout=f, stderr=subprocess.STDOUT, start_new_session=True)
+        try:
+            p.wait(timeout=600)
+        except subprocess.TimeoutExpired:
+            print(f"pvbatch still running after 600 s: stopped (see {log})")
+        try:
+            os.killpg(p.pid, signal.SIGKILL)  # the X server with it
+        except ProcessLookupError:
+            pass
+        p.wait()
+    print(open(log).read().splitlines()[:1])
 
 
 def plot_bifurcation():

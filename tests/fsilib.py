@@ -8,6 +8,7 @@ import math
 import os
 import re
 import shutil
+import signal
 import subprocess
 import tempfile
 
@@ -105,8 +106,23 @@ def paraview_reads(xdmf, png, warp=1):
     return {"frames": int(m.group(1)), "points": int(m.group(3)), "cells": int(m.group(4)), "displacement_max": float(m.group(6))}
 
 
-def subprocess_out(cmd):
-    return subprocess.run([str(c) for c in cmd], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True).stdout
+def subprocess_out(cmd, timeout=600):
+    """cmd's output (both streams), written to a file rather than a pipe, cmd in a process group
+    of its own that is killed whole when cmd ends: a helper left running (xvfb-run's X server,
+    which inherits the output) can then neither hold the test nor outlive it."""
+    with tempfile.TemporaryFile("w+") as out:
+        p = subprocess.Popen([str(c) for c in cmd], stdout=out, stderr=subprocess.STDOUT, text=True, start_new_session=True)
+        try:
+            p.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            print(f"{cmd[0]} still running after {timeout} s: stopped")
+        try:
+            os.killpg(p.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        p.wait()
+        out.seek(0)
+        return out.read()
 
 
 def groups(mesh, np=1, require=""):
