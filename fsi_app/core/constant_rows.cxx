@@ -72,9 +72,9 @@ PetscErrorCode ConstantRows::Restore(Mat P) const
   for (int p = 0; p < n; p++) {
     const Runs  &r = parts[p];
     PetscScalar *a;
-    size_t       from = 0;
+    size_t       at = 0; /* in r.values */
     PetscCall(MatSeqAIJGetArray(seq[p], &a));
-    for (size_t k = 0; k < r.start.size(); from += r.length[k], k++) std::memcpy(a + r.start[k], r.values.data() + from, r.length[k] * sizeof(PetscScalar));
+    for (size_t k = 0; k < r.start.size(); at += r.length[k], k++) std::memcpy(a + r.start[k], r.values.data() + at, r.length[k] * sizeof(PetscScalar));
     PetscCall(MatSeqAIJRestoreArray(seq[p], &a));
   }
   PetscFunctionReturn(0);
