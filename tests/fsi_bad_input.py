@@ -248,7 +248,8 @@ def coupled_bad_input():
     """A mesh without an interface group, an interface group that is not between the fluid
     and the wall, a no-slip interface, a static coupled run, an incomplete or unknown block
     list, a probe outside the fluid, FaCSI's fluid PC told a multiplier field the split does not
-    have, a fluid mesh that inverts under a soft wall: a sentence naming the cause."""
+    have, a direct solver out of workspace (alone and inside a field split), a fluid mesh that
+    inverts under a soft wall: a sentence naming the cause."""
     cases = ((["-mesh", os.path.join(MESHES, "cube_L0.msh")], "has no physical group"),
              (["-geometry_interface", "outer_wall"], "-geometry_interface outer_wall: the group's faces must lie between cells of -fluid_region fluid and of -structure_region wall"),
              (["-fluid_noslip", "interface"], "-fluid_noslip interface: on the interface interface the fluid moves with the wall"),
@@ -258,6 +259,11 @@ def coupled_bad_input():
              (["-fluid_probes", "5,0,1"], "-fluid_probes: the point (5., 0., 1.) is not in the field's region"),
              (["-options_file", FACSI, "-fieldsplit_fluid_pc_facsi_fluid_multiplier_field", "lambda"],
               "PCFACSIFLUID: the split has no field called lambda (-pc_facsi_fluid_multiplier_field)"),
+             # MUMPS given no room beyond its analysis' estimate: the split and option to raise
+             (["-mat_mumps_icntl_14", 0, "-t_final", 5e-4, "-max_step_cuts", 0],
+              "the linear solver failed in step 1: the factorization of -pc_type ran out of workspace (MUMPS: raise -mat_mumps_icntl_14"),
+             (["-options_file", os.path.join(SCENES, "fsi_fieldsplit.opts"), "-fieldsplit_fluid_mat_mumps_icntl_14", 0, "-t_final", 5e-4, "-max_step_cuts", 0],
+              "the factorization of -fieldsplit_fluid_pc_type ran out of workspace (MUMPS: raise -fieldsplit_fluid_mat_mumps_icntl_14"),
              # a wall 1000 times softer under 750 times the pulse, full Newton steps: the fluid mesh
              # inverts on one rank, and both ranks stop with its cause (they used to part ways in the line search)
              (["-structure_E", 400, "-fluid_inlet_pressure", 1e6, "-t_final", 5e-4, "-max_step_cuts", 0, "-snes_linesearch_type", "basic"],

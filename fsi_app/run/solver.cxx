@@ -48,6 +48,51 @@ PetscErrorCode CreateSolver(const Scene &sc, DM dm, const Blocks &b, SNES *snes)
   PetscFunctionReturn(0);
 }
 
+/* Which factorization made a KSP fail, through nested field splits, as a sentence with its cure.
+   Every step is reduced over the ranks: a factor fails on some of them only, and all of them
+   must walk the same splits. */
+static PetscErrorCode FactorFailure(KSP ksp, std::string *why)
+{
+  KSPConvergedReason reason;
+  PC                 pc;
+  PetscBool          split, factor;
+  PetscMPIInt        failed;
+  MPI_Comm           comm = PetscObjectComm((PetscObject)ksp);
+
+  PetscFunctionBegin;
+  PetscCall(KSPGetConvergedReason(ksp, &reason));
+  failed = reason == KSP_DIVERGED_PC_FAILED;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, comm));
+  if (!failed) PetscFunctionReturn(0);
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &split));
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &factor, PCLU, PCCHOLESKY, ""));
+  if (split) {
+    KSP     *sub;
+    PetscInt n;
+    PetscCall(PCFieldSplitGetSubKSP(pc, &n, &sub));
+    for (PetscInt i = 0; i < n && why->empty(); i++) PetscCall(FactorFailure(sub[i], why));
+    PetscCall(PetscFree(sub));
+  } else if (factor) {
+    Mat            F;
+    MatFactorError err;
+    MatSolverType  solver;
+    const char    *prefix;
+    PetscMPIInt    e;
+    PetscCall(PCFactorGetMatrix(pc, &F));
+    PetscCall(MatFactorGetError(F, &err));
+    e = (PetscMPIInt)err;
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &e, 1, MPI_INT, MPI_MAX, comm));
+    PetscCall(PCFactorGetMatSolverType(pc, &solver));
+    PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
+    const std::string pre = prefix ? prefix : "";
+    if (e == MAT_FACTOR_OUTMEMORY) *why = "the factorization of -" + pre + "pc_type ran out of workspace" + (std::string(solver) == MATSOLVERMUMPS ? " (MUMPS: raise -" + pre + "mat_mumps_icntl_14, the percent added to its analysis' estimate)" : "");
+    else if (e == MAT_FACTOR_STRUCT_ZEROPIVOT || e == MAT_FACTOR_NUMERIC_ZEROPIVOT) *why = "the factorization of -" + pre + "pc_type met a zero pivot: that operator is singular (are its rigid or constant modes fixed by a condition?)";
+    else if (e) *why = "the factorization of -" + pre + "pc_type failed in " + solver;
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CheckFinished(const Scene &sc, const Blocks &b, SNES snes, const RunReport &report)
 {
   SNESConvergedReason reason = report.steps.empty() ? SNES_CONVERGED_ITERATING : report.steps.back().reason;
@@ -79,6 +124,8 @@ PetscErrorCode CheckFinished(const Scene &sc, const Blocks &b, SNES snes, const 
     KSPConvergedReason kreason;
     PetscCall(SNESGetKSP(snes, &ksp));
     PetscCall(KSPGetConvergedReason(ksp, &kreason));
+    PetscCall(FactorFailure(ksp, &cause));
+    PetscCheck(cause.empty(), PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "the linear solver failed in step %" PetscInt_FMT ": %s", step, cause.c_str());
     SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "the linear solver failed in step %" PetscInt_FMT " (%s, also on the step halved %" PetscInt_FMT " times); see -ksp_monitor_true_residual; CG needs a symmetric preconditioner (PCASM: -pc_asm_type basic); -pc_type lu -pc_factor_mat_solver_type mumps tells whether the preconditioner is the cause", step, KSPConvergedReasons[kreason], sc.maxCuts);
   }
   PetscCheck(reason >= 0, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton did not converge in step %" PetscInt_FMT " (%s, also on the step halved %" PetscInt_FMT " times); see -snes_monitor, or %s", step, SNESConvergedReasons[reason], sc.maxCuts, cure);
