@@ -10,11 +10,13 @@ Per run: iterations, setup (PCSetUp) and solve (KSPSolve) time from -log_view (m
 peak memory from -memory_view (sum over ranks), and total time over the best other method of the
 same problem. Failures (no convergence, error, timeout) are rows too.
 Then iterations vs number of subdomains (8 -> 216) at H/h = 4: gdsw with several box subdomains
-per rank on 2 ranks, PETSc's GDSW one subdomain per rank on PETSc's ex71 (oversubscribed).
+per rank on 2 ranks; PETSc's GDSW, gdsw and BDDC (deluxe scaling) one subdomain per rank on
+PETSc's ex71 (oversubscribed).
 Writes bench/results/gdsw_suite.{csv,cmd,png} and gdsw_suite_scaling.{csv,cmd,png}.
 With --sweep instead: gdsw's time to solution on P1 against subdomains per rank and problem
 size, which fixed the default rule (bench/results/gdsw_subdomains_per_rank.{csv,cmd,png}).
-Usage: scripts/bench_gdsw_suite.py [--quick] [--sweep] [--plot | --tables]
+With --scaling: the iterations vs subdomains alone.
+Usage: scripts/bench_gdsw_suite.py [--quick] [--sweep | --scaling] [--plot | --tables]
 (--plot redraws the PNGs from the CSVs; --tables prints the CSVs as markdown tables)
 The build directory is $GDSW_BUILD (default <top>/build)."""
 import csv
@@ -24,7 +26,7 @@ import sys
 
 from benchlib import check_command_line, measure_solve as measure, write_results
 
-check_command_line(__doc__, flags=("--plot", "--quick", "--sweep", "--tables"))
+check_command_line(__doc__, flags=("--plot", "--quick", "--scaling", "--sweep", "--tables"))
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 build = os.environ.get("GDSW_BUILD", os.path.join(top, "build"))
@@ -129,6 +131,7 @@ def scaling():
         if b**3 <= EX71_MAX_RANKS:
             runs["PETSc GDSW (ex71, 1 per rank)"] = f"{ex71} {PETSC_GDSW}"
             runs["GDSW (ex71 MATIS, 1 per rank)"] = f"{ex71} -dll_append {build}/pc_gdsw/libpetscgdsw.so -pc_type gdsw"
+            runs["BDDC deluxe (ex71, 1 per rank)"] = f"{ex71} -pc_type bddc -pc_bddc_use_deluxe_scaling"
         for name, cmd in runs.items():
             r = measure(cmd, 120 if quick else 400)
             print(f"{b**3:4d} subdomains {name:32s} {r['status']:10.40s} its {r['iterations']}", flush=True)
@@ -256,6 +259,7 @@ def main():
     os.makedirs(results, exist_ok=True)
     sweeping = "--sweep" in sys.argv
     parts = [("gdsw_subdomains_per_rank", sweep, plot_sweep)] if sweeping else \
+            [("gdsw_suite_scaling", scaling, plot_scaling)] if "--scaling" in sys.argv else \
             [("gdsw_suite", suite, plot_suite), ("gdsw_suite_scaling", scaling, plot_scaling)]
     if "--tables" in sys.argv:
         return tables()

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: BSD-2-Clause
 """gdsw against what a PETSc user would otherwise type on ordinary elasticity: GAMG, ML,
-BoomerAMG and PETSc's own GDSW, with gdsw's defaults (balanced combination), the additive combination
+BoomerAMG, PETSc's own GDSW and BDDC (deluxe scaling, one subdomain per rank, on MATIS: every
+problem but ex56, whose driver assembles AIJ only), with gdsw's defaults (balanced combination), the additive combination
 and each of its levers.
   ex56   PETSc's ksp/tutorials/ex56 -ne 31 -use_mat_nearnullspace (98,304 dofs, a soft inclusion),
          1 rank; and 2 ranks, where ex56 puts every row on rank 0
@@ -16,7 +17,10 @@ CG to rtol 1e-8 in the unpreconditioned norm, zero initial guess. Per run: itera
 (PCSetUp) and solve (KSPSolve) time from -log_view (max over ranks), peak memory (sum over ranks);
 each command runs --repeat times (default 3) back to back and the row holds the median time.
 Writes bench/results/gdsw_vs_amg.{csv,cmd,png}.
-Usage: scripts/bench_gdsw_vs_amg.py [--quick] [--repeat N] [--only PROBLEM,...] [--hugepages] [--plot]
+Usage: scripts/bench_gdsw_vs_amg.py [--quick] [--repeat N] [--only PROBLEM,...] [--methods METHOD,...] [--hugepages] [--plot]
+(--only, --methods: those problems (first words: ex56, ex71, cube, plate) or methods (names as
+in the table, e.g. "BDDC deluxe") alone; their rows and commands replace the same ones in the
+files, the others stay)
 (--quick: small sizes, one run each, files in /tmp; --plot redraws the PNG from the CSV;
 --hugepages: every run with glibc's GLIBC_TUNABLES=glibc.malloc.hugetlb=1, so that malloc takes
 transparent huge pages where the kernel gives them only on request, as Debian's does; files
@@ -29,7 +33,7 @@ import sys
 
 from benchlib import check_command_line, loadavg, measure_solve, portable, write_results
 
-check_command_line(__doc__, valued=("--only", "--repeat"), flags=("--plot", "--quick", "--hugepages"))
+check_command_line(__doc__, valued=("--only", "--methods", "--repeat"), flags=("--plot", "--quick", "--hugepages"))
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 build = os.environ.get("GDSW_BUILD", os.path.join(top, "build"))
@@ -67,14 +71,19 @@ METHODS = {
     "BoomerAMG nodal": "-pc_type hypre -pc_hypre_boomeramg_nodal_coarsen 4 -pc_hypre_boomeramg_vec_interp_variant 2 "
                        "-pc_hypre_boomeramg_strong_threshold 0.5 -pc_hypre_boomeramg_agg_nl 1",
     "PETSc GDSW (PCMG)": PETSC_GDSW,
+    # one subdomain per rank, subassembled: {matis} becomes the driver's option for MATIS
+    "BDDC deluxe": "{matis} -pc_type bddc -pc_bddc_use_deluxe_scaling",
 }
+# how each driver makes its operator a MATIS (ex71 always does; ex56 cannot)
+MATIS = {"ex71": "", "cube": "-mat_type is", "plate": "-dm_mat_type is"}
 AMG = ["GAMG", "ML", "BoomerAMG", "BoomerAMG nodal"]
 # PETSc's GDSW converts an AIJ operator to MATIS with one subdomain per rank: 266 s on the cube
 NO_PETSC_GDSW = [m for m in METHODS if m != "PETSc GDSW (PCMG)"]
+NO_MATIS = [m for m in METHODS if m != "BDDC deluxe"]
 METHODS["gdsw repartitioned"] = f"{GDSW} -pc_gdsw_repartition"
 # BoomerAMG is left out: on the thickest plate it needs 179 iterations and 52 s (ML 0.5 s), and its
 # nodal variant stops with a segmentation fault (block size 1: DMPlex removes the clamped dofs)
-PLATE_METHODS = ["gdsw (defaults)", "gdsw additive", "gdsw RGDSW", "gdsw adaptive", "GAMG", "ML", "PETSc GDSW (PCMG)"]
+PLATE_METHODS = ["gdsw (defaults)", "gdsw additive", "gdsw RGDSW", "gdsw adaptive", "GAMG", "ML", "PETSc GDSW (PCMG)", "BDDC deluxe"]
 
 
 def plate(thickness, faces, partitioner):
@@ -90,7 +99,7 @@ def problems():
     ne, cells, n, faces = (11, 11, 20, "20,20,2") if quick else (31, 31, 54, "80,80,2")
     ex56 = f"{EX56} -ne {ne} -use_mat_nearnullspace"
     plates = [(f"plate t={t:g}", 2, f"mpiexec -n 2 {plate(t, faces, 'ptscotch')}", PLATE_METHODS) for t in (0.5, 0.05, 0.005)]
-    return [("ex56", 1, f"mpiexec -n 1 {ex56}", list(METHODS)),
+    return [("ex56", 1, f"mpiexec -n 1 {ex56}", NO_MATIS),
             ("ex56 (2 ranks, all rows on rank 0)", 2, f"mpiexec -n 2 {ex56}", [m for m in METHODS if m.startswith("gdsw")] + ["ML"]),
             ("ex71 MATIS", 2, f"mpiexec -n 2 {EX71} -pde_type Elasticity -dim 3 -cells {cells},{cells},{cells}", list(METHODS)),
             ("cube", 2, f"mpiexec -n 2 {ELASTICITY} -n {n}", NO_PETSC_GDSW)] + plates + [
@@ -104,14 +113,19 @@ def main():
         return
     os.makedirs(results, exist_ok=True)
     only = sys.argv[sys.argv.index("--only") + 1].split(",") if "--only" in sys.argv else None
+    chosen = sys.argv[sys.argv.index("--methods") + 1].split(",") if "--methods" in sys.argv else None
+    if chosen and set(chosen) - set(METHODS):
+        sys.exit(f"bench_gdsw_vs_amg.py: --methods: no method {', '.join(sorted(set(chosen) - set(METHODS)))}; the methods: {', '.join(METHODS)}")
     load, rows, cmds = loadavg(), [], []
     for name, ranks, base, methods in problems():
         if only and name.split()[0] not in only:
             continue
         for method in methods:
+            if chosen and method not in chosen:
+                continue
             # the AMGs take no MATIS: ex71 assembles the same matrix as AIJ for them
             aij = " -dm_mat_type aij" if name.startswith("ex71") and method in AMG else ""
-            cmd = f"{base}{aij} {KRYLOV} {METHODS[method]} {MEASURE}"
+            cmd = f"{base}{aij} {KRYLOV} {METHODS[method].format(matis=MATIS.get(name.split()[0], ''))} {MEASURE}"
             if hugepages:
                 cmd = cmd.replace("mpiexec ", "mpiexec -x GLIBC_TUNABLES=glibc.malloc.hugetlb=1 ", 1)
             runs = [measure_solve(cmd, 900) for _ in range(repeat)]
@@ -128,16 +142,18 @@ def main():
             rows.append(row)
             cmds.append(cmd)
     out = os.path.join(results, OUTNAME)
-    if only and os.path.exists(out + ".csv"):  # the other problems' rows and commands stay as they were
-        ran = {r["problem"] for r in rows}
-        old = [r for r in csv.DictReader(open(out + ".csv")) if r["problem"] not in ran]
-        bases = [portable(base) + " " for p, _, base, _ in problems() if p in ran]
-        oldcmds = [c for c in open(out + ".cmd").read().splitlines() if not c.startswith("#") and not any(c.startswith(b) for b in bases)]
-        rows, cmds = old + rows, oldcmds + cmds
+    if (only or chosen) and os.path.exists(out + ".csv"):  # the other rows and commands stay as they were
+        ran = {(r["problem"], r["method"]) for r in rows}
+        old = [r for r in csv.DictReader(open(out + ".csv")) if (r["problem"], r["method"]) not in ran]
+        new = {portable(c) for c in cmds}
+        oldcmds = [c for c in open(out + ".cmd").read().splitlines() if not c.startswith("#") and c not in new]
+        order = {p: k for k, (p, _, _, _) in enumerate(problems())}
+        rows = sorted(old + rows, key=lambda r: (order.get(r["problem"], len(order)), list(METHODS).index(r["method"]) if r["method"] in METHODS else len(METHODS)))
+        cmds = oldcmds + cmds
     for r in rows:
         amg = [float(o["total_s"]) for o in rows if o["problem"] == r["problem"] and o["method"] in AMG and o["status"] == "ok"]
         r["ratio_to_best_amg"] = round(float(r["total_s"]) / min(amg), 2) if amg and r["status"] == "ok" else ""
-    write_results(out, rows, cmds, f"scripts/bench_gdsw_vs_amg.py (medians of {repeat} back-to-back runs, OMP_NUM_THREADS=1)", load)
+    write_results(out, rows, cmds, f"scripts/bench_gdsw_vs_amg.py (medians of {repeat} back-to-back runs, OMP_NUM_THREADS=1)", load, keep_earlier=bool(only or chosen))
     plot(rows)
 
 

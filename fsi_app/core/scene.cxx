@@ -38,6 +38,7 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(opt.Int("-max_step_cuts", "a failed step (Newton diverged, element inverted) is halved up to this many times before the run stops", &sc.maxCuts, Range{0, 20}, RUN));
   PetscCall(opt.Int("-time_predictor_order", "Newton's first iterate of a time step: the polynomial through the last k+1 states extrapolated to the new time (0: the last state; at most 1 with backward_euler, 3 with bdf2)", &sc.predictorOrder, Range{0, 3}, RUN));
   PetscCall(opt.Bool("-jacobian_keep_constant", "assemble the Jacobian rows that never change (the harmonic extension's) once and keep their values; false: at every Newton step", &sc.keepConstant, RUN));
+  PetscCall(opt.Bool("-jacobian_direct_add", "add the element matrices straight into the Jacobian's CSR storage (AIJ); false: through MatSetValues", &sc.directAdd, RUN));
   PetscCall(opt.Bool("-mms", "verification: each block's manufactured solution (the wall: -mms_amplitude on the unit cube; the fluid: -mms_flow)", &sc.mms, PROBLEM));
   PetscCall(opt.String("-output", "XDMF file of the solution over time (+ .h5 beside it); empty: none", sc.output, sizeof(sc.output), RUN));
   PetscCall(opt.Int("-output_every", "write every n-th step", &sc.outputEvery, AtLeast(1), RUN));

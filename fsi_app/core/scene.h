@@ -23,6 +23,7 @@ struct Scene {
   PetscInt   predictorOrder = 1; /* Newton's first iterate from the past states (core/time_history.h) */
   TimeScheme scheme    = BACKWARD_EULER;
   PetscBool  keepConstant = PETSC_TRUE; /* the constant Jacobian blocks assembled once (core/constant_rows.h) */
+  PetscBool  directAdd    = PETSC_TRUE; /* element matrices added into the CSR storage (discretization/csr_add.h) */
   /* verification: each block's manufactured solution */
   PetscBool mms = PETSC_FALSE;
   /* files */

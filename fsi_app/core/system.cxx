@@ -2,6 +2,7 @@
 #include "system.h"
 #include "discretization/cells.h"
 #include "discretization/conditions.h"
+#include "discretization/csr_add.h"
 #include <algorithm>
 
 namespace fsi {
@@ -78,13 +79,17 @@ static PetscErrorCode LayOut(const System &s, Mat P)
 /* P += the Jacobians of the blocks whose Jacobian is (or is not) constant */
 static PetscErrorCode AddJacobians(const System &s, const PetscScalar *x, Mat P, PetscBool constant)
 {
+  CsrAdd csr;
+
   PetscFunctionBegin;
+  if (s.directAdd) PetscCall(csr.Open(P));
   for (size_t k = 0; k < s.blocks.size(); k++) {
     if (s.blocks[k]->ConstantJacobian() != constant) continue;
     PetscCall(PetscLogEventBegin(s.jacobianEvent[k], 0, 0, 0, 0));
     PetscCall(s.blocks[k]->Jacobian(x, P));
     PetscCall(PetscLogEventEnd(s.jacobianEvent[k], 0, 0, 0, 0));
   }
+  PetscCall(csr.Close());
   PetscFunctionReturn(0);
 }
 

@@ -18,6 +18,7 @@ struct System {
   SNES                 snes    = nullptr;     /* told of a residual with no value (an inverted cell on any rank) */
   std::vector<PetscLogEvent> residualEvent, jacobianEvent; /* per block: Residual_<block>, Jacobian_<block> */
   PetscBool                  keepConstant = PETSC_TRUE;   /* the constant blocks' values kept (-jacobian_keep_constant) */
+  PetscBool                  directAdd    = PETSC_TRUE;   /* element matrices into P's storage (-jacobian_direct_add) */
   ConstantRows               constant;
 };
 

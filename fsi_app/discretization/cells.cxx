@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "cells.h"
 #include "discretization/ale_map.h"
+#include "discretization/csr_add.h"
 #include "base/files.h"
 #include "mesh/mesh.h"
 #include <algorithm>
@@ -159,7 +160,8 @@ PetscErrorCode AddElementMatrix(Mat P, PetscInt nr, const PetscInt rows[], Petsc
   for (PetscInt j = 0; j < nc; j++) sorted[j] = cols[order[j]];
   for (PetscInt i = 0; i < nr; i++)
     for (PetscInt j = 0; j < nc; j++) Ks[i * nc + j] = K[i * nc + order[j]];
-  PetscCall(MatSetValues(P, nr, rows, nc, sorted, Ks, ADD_VALUES));
+  if (const CsrAdd *csr = CsrAdd::Of(P)) PetscCall(csr->Add(nr, rows, nc, sorted, Ks));
+  else PetscCall(MatSetValues(P, nr, rows, nc, sorted, Ks, ADD_VALUES));
   PetscFunctionReturn(0);
 }
 

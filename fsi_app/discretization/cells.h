@@ -67,9 +67,9 @@ void FieldCellsDropRows(FieldCells &cells, const std::vector<PetscInt> &points);
    position X (an initial state). */
 void SetNodalValues(const FieldCells &cells, const std::function<void(const PetscReal X[3], PetscScalar *v)> &value, PetscScalar *x);
 
-/* P += K, an element matrix (nr x nc, row-major, nc <= 64) at rows x cols, passed to
-   MatSetValues() with its columns sorted: an AIJ row is then searched onwards from the previous
-   column instead of afresh for each (negative indices stay skipped). */
+/* P += K, an element matrix (nr x nc, row-major, nc <= 64) at rows x cols, its columns sorted:
+   straight into P's storage while a CsrAdd is open on it (discretization/csr_add.h), else
+   through MatSetValues() (negative indices stay skipped). */
 PetscErrorCode AddElementMatrix(Mat P, PetscInt nr, const PetscInt rows[], PetscInt nc, const PetscInt cols[], const PetscScalar K[]);
 
 /* Final assembly of the preconditioning matrix P and, if it is another matrix, of J. */

@@ -208,6 +208,7 @@ PetscErrorCode RunScene()
   if (sc.checkpoint[0] || sc.restart[0]) PetscCall(FileDigest(PETSC_COMM_WORLD, sc.mesh, &sc.problem[MeshDigestKey]));
   PetscCall(CreateSceneMesh(sc, b, &dm));
   b.system.keepConstant = sc.keepConstant;
+  b.system.directAdd    = sc.directAdd;
   PetscCall(SetUpBlocks(dm, b));
   PetscCall(DMCreateGlobalVector(dm, &x));
   PetscCall(PetscObjectSetName((PetscObject)x, "solution"));
