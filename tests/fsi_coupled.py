@@ -257,9 +257,11 @@ def binary_matrices(path):
     return mats
 
 
-def same_jacobians(option, *opts, np=2, scene_file=FSI, tol=1e-10):
+def same_jacobians(option, *opts, np=2, scene_file=FSI, first=1e-10):
     """Every Jacobian of a MUMPS run with `option` true equals the one with it false, entry for
-    entry in the same pattern, to tol of the largest entry."""
+    entry in the same pattern: the first (the same state in both runs) to `first` of the largest
+    entry, the later ones to 1e-10 (the Newton states agree to about 1e-12: MUMPS's parallel
+    solves are not bitwise reproducible)."""
     mats = {}
     for value in ("true", "false"):
         path = os.path.join(tempfile.mkdtemp(), "J.bin")
@@ -271,7 +273,7 @@ def same_jacobians(option, *opts, np=2, scene_file=FSI, tol=1e-10):
         scale = max(abs(v) for v in b[2])
         diff = max(abs(x - y) for x, y in zip(a[2], b[2]))
         print(f"{option} on {np} rank(s), Jacobian {k}: {len(a[2])} entries, max |true - false| / max |J| = {diff / scale:.2e}")
-        between(diff / scale, 0, tol, f"Jacobian {k}: max |true - false| / max |J|")
+        between(diff / scale, 0, first if k == 0 else 1e-10, f"Jacobian {k}: max |true - false| / max |J|")
 
 
 @case
@@ -290,11 +292,11 @@ def fsi_direct_add():
     default) give the matrices MatSetValues gives: on one rank (SeqAIJ) and on two (MPIAIJ: the
     off-diagonal part, and the rows another rank owns through the stash), with the arterial wall,
     a resistance outlet and its backflow faces on two. Each entry is the same sum in the same
-    order, so the matrices agree to 1e-14 of the largest entry (measured: exactly); one
+    order, so the first Jacobians agree to 1e-15 of the largest entry (measured: exactly); one
     contribution lost or added twice is off by its own size."""
-    same_jacobians("-jacobian_direct_add", np=1, tol=1e-14)
+    same_jacobians("-jacobian_direct_add", np=1, first=1e-15)
     same_jacobians("-jacobian_direct_add", "-blocks", "structure,fluid,geometry,coupling,outlets", "-outlets_outlet_resistance", 1e4,
-                   "-fluid_backflow_stabilization", 0.2, scene_file=os.path.join(SCENES, "fsi_tube1_arterial.opts"), tol=1e-14)
+                   "-fluid_backflow_stabilization", 0.2, scene_file=os.path.join(SCENES, "fsi_tube1_arterial.opts"), first=1e-15)
 
 
 @case
