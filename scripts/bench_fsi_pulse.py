@@ -33,6 +33,8 @@ def command(app, report):
 
 def main():
     app = sys.argv[sys.argv.index("--app") + 1] if "--app" in sys.argv else os.path.join(TOP, "install", "bin", "fsi_app")
+    if not os.path.exists(os.path.join(TOP, "meshes", "tube1_seed_fsi.msh")):  # before the log is written over
+        sys.exit("bench_fsi_pulse: meshes/tube1_seed_fsi.msh is missing; scripts/make-meshes tube1 seed_fsi makes it")
     report = os.path.join(tempfile.mkdtemp(), "report.json")
     cmd, load = command(app, report), loadavg()
     with open(OUT + ".log", "w") as log:  # the run's progress, one line per step, as it comes
