@@ -237,6 +237,21 @@ def fsi_fluid_setup_reuse():
     between(abs(once["results"]["max_displacement"] / direct["results"]["max_displacement"] - 1), 0, 1e-6, "every_step / MUMPS max displacement")
 
 
+@case
+def fsi_lagged_jacobian():
+    """scenes/fsi_mumps_lagged.opts keeps one Jacobian and its MUMPS factors for up to 30 Newton
+    steps across time steps: over 3 time steps the run factors at most once per 30 Newton steps
+    (-log_view's MatLUFactorNum) and ends in full Newton's state (max displacement and pressure
+    norm to 1e-6: both stop at the same residual tolerance)."""
+    lagged = fsi("-options_file", os.path.join(SCENES, "fsi_mumps_lagged.opts"), "-t_final", 1.5e-3, "-log_view")
+    factorisations = int(re.search(r"^MatLUFactorNum\s+(\d+)", lagged["out"], re.M).group(1))
+    direct = fsi("-t_final", 1.5e-3)
+    print("Newton", direct["newton"], lagged["newton"], "LU factorisations", factorisations)
+    assert len(lagged["steps"]) == 3 and factorisations <= -(-lagged["newton"] // 30), (lagged["newton"], factorisations)
+    for key in ("max_displacement", "pressure_l2_norm"):
+        between(abs(lagged["results"][key] / direct["results"][key] - 1), 0, 1e-6, f"lagged / full Newton {key}")
+
+
 def binary_matrices(path):
     """The AIJ matrices of a PETSc binary file (big-endian: class id, rows, columns, entries, row
     lengths, column indices, values), each as (row lengths, column indices, values)."""
