@@ -272,16 +272,21 @@ def binary_matrices(path):
     return mats
 
 
-def same_jacobians(option, *opts, np=2, scene_file=FSI, first=1e-10):
+def same_jacobians(option, *opts, np=2, scene_file=FSI, first=1e-10, event=None):
     """Every Jacobian of a MUMPS run with `option` true equals the one with it false, entry for
     entry in the same pattern: the first (the same state in both runs) to `first` of the largest
     entry, the later ones to 1e-10 (the Newton states agree to about 1e-12: MUMPS's parallel
-    solves are not bitwise reproducible)."""
+    solves are not bitwise reproducible). `event`: a -log_view event that runs at least once per
+    Jacobian with the option true and never with it false (the two runs took different paths)."""
     mats = {}
     for value in ("true", "false"):
         path = os.path.join(tempfile.mkdtemp(), "J.bin")
-        fsi("-t_final", 5e-4, option, value, "-ksp_view_mat", "binary:" + path, *opts, np=np, scene_file=scene_file)
+        r = fsi("-t_final", 5e-4, option, value, "-ksp_view_mat", "binary:" + path, *opts, *(["-log_view"] if event else []), np=np, scene_file=scene_file)
         mats[value] = binary_matrices(path)
+        if event:
+            count = re.search(rf"^{event}\s+(\d+)", r["out"], re.M)
+            n = int(count.group(1)) if count else 0
+            assert (n >= r["newton"]) if value == "true" else n == 0, (event, value, n, r["newton"])
     assert len(mats["true"]) == len(mats["false"]) >= 2, [len(m) for m in mats.values()]
     for k, (a, b) in enumerate(zip(mats["true"], mats["false"])):
         assert a[0] == b[0] and a[1] == b[1], f"Jacobian {k}: patterns differ"
@@ -308,10 +313,11 @@ def fsi_direct_add():
     off-diagonal part, and the rows another rank owns through the stash), with the arterial wall,
     a resistance outlet and its backflow faces on two. Each entry is the same sum in the same
     order, so the first Jacobians agree to 1e-15 of the largest entry (measured: exactly); one
-    contribution lost or added twice is off by its own size."""
-    same_jacobians("-jacobian_direct_add", np=1, first=1e-15)
+    contribution lost or added twice is off by its own size. -log_view's JacobianDirectAdd runs
+    at every Jacobian with the option and never without: the two runs took different paths."""
+    same_jacobians("-jacobian_direct_add", np=1, first=1e-15, event="JacobianDirectAdd")
     same_jacobians("-jacobian_direct_add", "-blocks", "structure,fluid,geometry,coupling,outlets", "-outlets_outlet_resistance", 1e4,
-                   "-fluid_backflow_stabilization", 0.2, scene_file=os.path.join(SCENES, "fsi_tube1_arterial.opts"), first=1e-15)
+                   "-fluid_backflow_stabilization", 0.2, scene_file=os.path.join(SCENES, "fsi_tube1_arterial.opts"), first=1e-15, event="JacobianDirectAdd")
 
 
 @case

@@ -200,6 +200,12 @@ PetscErrorCode OptionReader::Bool(const char *name, const char *text, PetscBool 
 
   PetscFunctionBegin;
   PetscCall(Given(name, nullptr, value, &given));
+  if (given && !value.empty()) { /* PETSc's own refusal does not name the option */
+    PetscBool known = PETSC_FALSE;
+    for (const char *word : {"true", "false", "yes", "no", "on", "off", "1", "0"})
+      if (!known) PetscCall(PetscStrcasecmp(value.c_str(), word, &known));
+    PetscCheck(known, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s %s is not true or false", name, value.c_str());
+  }
   if (given) PetscCall(PetscOptionsGetBool(PetscOptionsObject->options, PetscOptionsObject->prefix, name, v, nullptr)); /* alone: true */
   PetscCall(Help(name, *v ? "true" : "false", def, text, "true or false; alone: true"));
   Record(name, role, *v ? "true" : "false");

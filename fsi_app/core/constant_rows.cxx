@@ -1,20 +1,15 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "constant_rows.h"
+#include "discretization/csr_add.h"
 #include <cstring>
 
 namespace fsi {
 
 static PetscErrorCode SeqParts(Mat P, Mat seq[2], int *n)
 {
-  PetscBool mpi, isSeq;
-
   PetscFunctionBegin;
-  PetscCall(PetscObjectTypeCompare((PetscObject)P, MATMPIAIJ, &mpi));
-  PetscCall(PetscObjectTypeCompare((PetscObject)P, MATSEQAIJ, &isSeq));
-  PetscCheck(mpi || isSeq, PetscObjectComm((PetscObject)P), PETSC_ERR_SUP, "the Jacobian's constant rows are kept for AIJ matrices only");
-  if (mpi) PetscCall(MatMPIAIJGetSeqAIJ(P, &seq[0], &seq[1], nullptr));
-  else seq[0] = P;
-  *n = mpi ? 2 : 1;
+  PetscCall(AijParts(P, seq, n, nullptr));
+  PetscCheck(*n, PetscObjectComm((PetscObject)P), PETSC_ERR_SUP, "the Jacobian's constant rows are kept for AIJ matrices only");
   PetscFunctionReturn(0);
 }
 

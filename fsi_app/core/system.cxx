@@ -7,7 +7,7 @@
 
 namespace fsi {
 
-static PetscLogEvent AssembleJacobian, LayOutJacobian, RestoreConstantRows;
+static PetscLogEvent AssembleJacobian, LayOutJacobian, RestoreConstantRows, DirectAdd;
 
 static PetscErrorCode SystemResidual(DM dm, Vec Xl, Vec Fl, void *ctx)
 {
@@ -83,12 +83,15 @@ static PetscErrorCode AddJacobians(const System &s, const PetscScalar *x, Mat P,
 
   PetscFunctionBegin;
   if (s.directAdd) PetscCall(csr.Open(P));
+  const PetscBool direct = (PetscBool)(CsrAdd::Of(P) != nullptr); /* -log_view's JacobianDirectAdd: the blocks' Jacobians written straight into P */
+  if (direct) PetscCall(PetscLogEventBegin(DirectAdd, P, 0, 0, 0));
   for (size_t k = 0; k < s.blocks.size(); k++) {
     if (s.blocks[k]->ConstantJacobian() != constant) continue;
     PetscCall(PetscLogEventBegin(s.jacobianEvent[k], 0, 0, 0, 0));
     PetscCall(s.blocks[k]->Jacobian(x, P));
     PetscCall(PetscLogEventEnd(s.jacobianEvent[k], 0, 0, 0, 0));
   }
+  if (direct) PetscCall(PetscLogEventEnd(DirectAdd, P, 0, 0, 0));
   PetscCall(csr.Close());
   PetscFunctionReturn(0);
 }
@@ -136,6 +139,7 @@ PetscErrorCode SystemAttach(DM dm, System &s)
     PetscCall(PetscLogEventRegister("AssembleJacobian", MAT_CLASSID, &AssembleJacobian));
     PetscCall(PetscLogEventRegister("LayOutJacobian", MAT_CLASSID, &LayOutJacobian));
     PetscCall(PetscLogEventRegister("ConstantRows", MAT_CLASSID, &RestoreConstantRows));
+    PetscCall(PetscLogEventRegister("JacobianDirectAdd", MAT_CLASSID, &DirectAdd));
   }
   s.residualEvent.resize(s.blocks.size());
   s.jacobianEvent.resize(s.blocks.size());

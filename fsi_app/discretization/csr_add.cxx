@@ -17,22 +17,36 @@ static PetscErrorCode OpenPart(Mat A, PetscInt rows, const PetscInt **i, const P
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CsrAdd::Open(Mat P_)
+PetscErrorCode AijParts(Mat P, Mat seq[2], int *n, const PetscInt **garray)
 {
-  PetscBool seq, mpi, assembled;
-  PetscInt  m;
+  PetscBool mpi, isSeq;
 
   PetscFunctionBegin;
-  PetscCall(PetscObjectTypeCompare((PetscObject)P_, MATSEQAIJ, &seq));
-  PetscCall(PetscObjectTypeCompare((PetscObject)P_, MATMPIAIJ, &mpi));
+  PetscCall(PetscObjectTypeCompare((PetscObject)P, MATMPIAIJ, &mpi));
+  PetscCall(PetscObjectTypeCompare((PetscObject)P, MATSEQAIJ, &isSeq));
+  seq[0] = seq[1] = nullptr, *n = mpi ? 2 : isSeq ? 1 : 0;
+  if (garray) *garray = nullptr;
+  if (mpi) PetscCall(MatMPIAIJGetSeqAIJ(P, &seq[0], &seq[1], garray));
+  else if (isSeq) seq[0] = P;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CsrAdd::Open(Mat P_)
+{
+  Mat             seq[2];
+  const PetscInt *g;
+  int             n;
+  PetscBool       assembled;
+  PetscInt        m;
+
+  PetscFunctionBegin;
+  PetscCall(AijParts(P_, seq, &n, &g));
   PetscCall(MatAssembled(P_, &assembled));
-  if (!(seq || mpi) || !assembled) PetscFunctionReturn(0);
-  P = P_;
+  if (!n || !assembled) PetscFunctionReturn(0);
+  P = P_, diag.A = seq[0], off.A = seq[1], garray = g;
   PetscCall(MatGetOwnershipRange(P, &rStart, &rEnd));
   PetscCall(MatGetOwnershipRangeColumn(P, &cStart, &cEnd));
   m = rEnd - rStart;
-  if (seq) diag.A = P;
-  else PetscCall(MatMPIAIJGetSeqAIJ(P, &diag.A, &off.A, &garray));
   PetscCall(OpenPart(diag.A, m, &diag.i, &diag.j, &diag.a));
   if (off.A) PetscCall(OpenPart(off.A, m, &off.i, &off.j, &off.a));
   PetscContainer c;

@@ -11,6 +11,11 @@
 
 namespace fsi {
 
+/* P's sequential AIJ parts: a SEQAIJ is its own part 0 (*n = 1); an MPIAIJ has its diagonal and
+   off-diagonal parts (*n = 2) and, if asked, the off-diagonal part's global columns (ascending);
+   any other type has none (*n = 0). */
+PetscErrorCode AijParts(Mat P, Mat seq[2], int *n, const PetscInt **garray);
+
 class CsrAdd {
 public:
   /* P (SEQAIJ or MPIAIJ, assembled, its pattern final) opened for Add; any other type is left
