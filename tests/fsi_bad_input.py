@@ -196,7 +196,7 @@ def mesh_bad_files():
 def option_faults():
     """Option values a new user mistypes stop the run before the first step with one sentence,
     printed once on 2 ranks: a choice that is not one of the list (PETSc's own parsers print it
-    on every rank), a switch that is neither true nor false (PETSc's names no option), a cosine pulse without its length, more probes than the 20 a run records (the rest were dropped silently), a
+    on every rank), a switch that is neither true nor false (PETSc's names no option), a structure set-up interval where the wall is not set up every time step, a cosine pulse without its length, more probes than the 20 a run records (the rest were dropped silently), a
     number of load increments no static solve needs, a refinement whose mesh 32-bit indices
     cannot number (it ran out of memory in DMRefine); and a probe that the pulse's front has not
     reached by the end of the run is said to be so (it printed "arrives at t -1")."""
@@ -204,6 +204,8 @@ def option_faults():
     cases = ((["-time_scheme", "bogus"], "-time_scheme bogus is not one of: backward_euler, bdf2"),
              (["-structure_pc_setup", "sometimes"], "-structure_pc_setup sometimes is not one of: every_newton, every_step, once"),
              (["-fluid_pc_setup", "once"], "-fluid_pc_setup once is not one of: every_newton, every_step"),
+             (["-structure_pc_setup_interval", 2], "-structure_pc_setup_interval 2: only with a set-up every time step (-structure_pc_setup every_step, the nonlinear wall's default); this run's is once"),
+             (["-structure_pc_setup_interval", 0], "-structure_pc_setup_interval: value must be >= 1 (got 0)"),
              (["-jacobian_direct_add", "maybe"], "-jacobian_direct_add maybe is not true or false"),
              (["-structure_material", "rubber"], "-structure_material rubber is not one of:"),
              (["-fluid_inlet_pressure_shape", "square"], "-fluid_inlet_pressure_shape square is not one of: step, cosine"),

@@ -238,6 +238,23 @@ def fsi_fluid_setup_reuse():
 
 
 @case
+def fsi_structure_setup_interval():
+    """-structure_pc_setup_interval k rebuilds the nonlinear wall's GDSW at every k-th time step
+    only: over 5 steps of the arterial tube with FaCSI, interval 2 sets it up at steps 1, 3 and 5
+    (-log_view's GDSWLocalFactor: 3, against 5 with every step's set-up) and ends in MUMPS's
+    state (max displacement to 1e-6: both stop at the Newton tolerance)."""
+    def run_with(k):
+        r = fsi("-options_file", FACSI, "-structure_subdomains", 4, "-t_final", 2.5e-3, "-structure_pc_setup_interval", k, "-log_view", scene_file=ARTERIAL)
+        r["setups"] = int(re.search(r"^GDSWLocalFactor\s+(\d+)", r["out"], re.M).group(1))
+        return r
+    every, second = run_with(1), run_with(2)
+    print("GDSW set-ups", every["setups"], second["setups"], "FGMRES", every["krylov"], second["krylov"])
+    assert len(second["steps"]) == 5 and (every["setups"], second["setups"]) == (5, 3), (every["setups"], second["setups"])
+    direct = fsi("-t_final", 2.5e-3, scene_file=ARTERIAL)
+    between(abs(second["results"]["max_displacement"] / direct["results"]["max_displacement"] - 1), 0, 1e-6, "interval 2 / MUMPS max displacement")
+
+
+@case
 def fsi_lagged_jacobian():
     """scenes/fsi_mumps_lagged.opts keeps one Jacobian and its MUMPS factors for up to 30 Newton
     steps across time steps: over 3 time steps the run factors at most once per 30 Newton steps

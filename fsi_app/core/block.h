@@ -102,8 +102,10 @@ public:
      scene's only one, its split of PCFIELDSPLIT otherwise) and dm holds exactly that split's
      fields; *nsp (or NULL) is the rows' near-null space, attached by the caller. */
   virtual PetscErrorCode ConfigurePC(DM dm, PC pc, MatNullSpace *nsp) { return *nsp = nullptr, 0; }
-  /* How often its split's preconditioner is rebuilt (the split's rows change with the state). */
+  /* How often its split's preconditioner is rebuilt (the split's rows change with the state);
+     with SETUP_EVERY_STEP, at every SetUpInterval()-th time step only. */
   virtual SplitSetUp SetUpPolicy() const { return SETUP_EVERY_NEWTON; }
+  virtual PetscInt   SetUpInterval() const { return 1; }
 
   virtual void Output(std::vector<OutputPart> &parts) const {}
   /* Its unknowns as the run reports them: (name, field). */

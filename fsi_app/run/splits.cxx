@@ -11,6 +11,8 @@ struct SplitSetUps {
   SNES                       snes;
   std::vector<KSP>           ksp; /* borrowed: PCFIELDSPLIT owns them */
   std::vector<SplitSetUp>    policy;
+  std::vector<PetscInt>      interval; /* SETUP_EVERY_STEP: at every interval-th solve */
+  PetscInt                   solves = 0; /* SNES solves begun: the run's time steps (and their retries) */
   std::vector<PetscLogEvent> event;
 };
 
@@ -34,9 +36,10 @@ static PetscErrorCode SetUpSplits(KSP ksp, Vec b, Vec x, void *ctx)
   if (ew) PetscCall(KSPPreSolve_SNESEW(ksp, b, x, s->snes));
   PetscCall(KSPSetUp(ksp));
   PetscCall(SNESGetIterationNumber(s->snes, &it));
+  if (it == 0) s->solves++;
   for (size_t k = 0; k < s->ksp.size(); k++) {
     PC              pc;
-    const PetscBool keep = (PetscBool)(s->policy[k] == SETUP_ONCE || (s->policy[k] == SETUP_EVERY_STEP && it > 0));
+    const PetscBool keep = (PetscBool)(s->policy[k] == SETUP_ONCE || (s->policy[k] == SETUP_EVERY_STEP && (it > 0 || (s->solves - 1) % s->interval[k])));
     PetscCall(KSPGetPC(s->ksp[k], &pc));
     PetscCall(PCSetReusePreconditioner(pc, keep)); /* a PC never set up is set up regardless */
     PetscCall(PetscLogEventBegin(s->event[k], s->ksp[k], 0, 0, 0));
@@ -90,6 +93,7 @@ PetscErrorCode SetNamedSplits(SNES snes, DM dm, const Splits &splits)
       PetscCall(PetscLogEventRegister(("SplitSetUp_" + splits[s].name).c_str(), KSP_CLASSID, &event));
       ctx->ksp.push_back(ksp[s]);
       ctx->policy.push_back(splits[s].owner ? splits[s].owner->SetUpPolicy() : SETUP_EVERY_NEWTON);
+      ctx->interval.push_back(splits[s].owner ? splits[s].owner->SetUpInterval() : 1);
       ctx->event.push_back(event);
     }
     PetscCall(PetscFree(ksp));

@@ -37,6 +37,7 @@ struct StructureOptions {
   PetscReal rho         = 1.2;
   PetscInt  subdomains = 1;
   PetscInt  pcSetUp = -1; /* its split's preconditioner rebuilt every Newton step, time step, once (SplitSetUp); -1: once if linear, else every time step */
+  PetscInt  pcSetUpInterval = 1; /* every_step: rebuilt at every this many time steps */
   std::vector<PetscReal> probes;  /* points (3 each) where the displacement is recorded */
   PetscReal mmsAmplitude = 1;     /* -mms: the manufactured displacement's amplitude */
   PetscReal lameRadii[2] = {0, 0}; /* verification against Lame's cylinder */
@@ -68,6 +69,7 @@ public:
   PetscBool             HasEnergy() const override { return PETSC_TRUE; }
   PetscErrorCode        ConfigurePC(DM dm, PC pc, MatNullSpace *nsp) override;
   SplitSetUp            SetUpPolicy() const override { return opt.pcSetUp >= 0 ? (SplitSetUp)opt.pcSetUp : Linear() ? SETUP_ONCE : SETUP_EVERY_STEP; }
+  PetscInt              SetUpInterval() const override { return opt.pcSetUpInterval; }
 
   void           Output(std::vector<OutputPart> &parts) const override;
   void           Unknowns(std::vector<std::pair<std::string, PetscInt>> &u) const override { u.push_back({"structure", field}); }
