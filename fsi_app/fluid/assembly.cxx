@@ -208,12 +208,12 @@ struct Columns {
   PetscReal N[30];     /* N_b */
 };
 
-static void ColumnsAt(const PetscReal N[10], const MovedPoint &m, const FlowPoint &p, Columns &c)
+static void ColumnsAt(const PetscReal N[10], const MovedPoint &m, const FlowPoint &p, Columns &cols)
 {
   for (int b = 0; b < 10; b++)
     for (int k = 0; k < 3; k++) {
-      c.N[3 * b + k] = N[b];
-      for (int i = 0; i < 3; i++) c.G[i][3 * b + k] = p.G[i][k], c.dN[i][3 * b + k] = m.dN[b][i];
+      cols.N[3 * b + k] = N[b];
+      for (int i = 0; i < 3; i++) cols.G[i][3 * b + k] = p.G[i][k], cols.dN[i][3 * b + k] = m.dN[b][i];
     }
 }
 
@@ -221,7 +221,7 @@ static void ColumnsAt(const PetscReal N[10], const MovedPoint &m, const FlowPoin
    flow p), added to S (34 x 30). Moving node b in direction m changes dN_a by
    -dN_a[m] dN_b, the weight by w dN_b[m], the gradient G_ij by -G_im dN_b[j], the mesh velocity
    by wRate N_b e_m and the point by N_b e_m (the body force; db[i][m] = db_i/dx_m). */
-static void VolumeShapeDerivatives(const FluidForms &fb, const PetscReal N[10], const PetscReal l[4], const MovedPoint &m, const FlowPoint &p, const Columns &c, const PetscReal cGradN[10], PetscReal w, PetscReal wRate, const PetscReal b[3], const PetscReal db[3][3], PetscReal S[34 * 30])
+static void VolumeShapeDerivatives(const FluidForms &fb, const PetscReal N[10], const PetscReal l[4], const MovedPoint &m, const FlowPoint &p, const Columns &cols, const PetscReal cGradN[10], PetscReal w, PetscReal wRate, const PetscReal b[3], const PetscReal db[3][3], PetscReal S[34 * 30])
 {
   const PetscReal  div = p.G[0][0] + p.G[1][1] + p.G[2][2];
   const PetscReal *dN  = &m.dN[0][0]; /* dN_b[m] over the columns j = 3 b + m */
@@ -252,7 +252,7 @@ static void VolumeShapeDerivatives(const FluidForms &fb, const PetscReal N[10], 
     for (int i = 0; i < 3; i++) {
       const PetscReal wv  = w * (r[i] * N[a] - p.p * ga[i] + fb.mu * GsdN[a][i]);
       PetscReal      *row = &S[(3 * a + i) * 30];
-      for (int j = 0; j < 30; j++) row[j] += wv * dN[j] + wga[j] * X[i][j] - c.dN[i][j] * wGtdN[j] + cG[j] * c.G[i][j] + cb[j] * D[i][j];
+      for (int j = 0; j < 30; j++) row[j] += wv * dN[j] + wga[j] * X[i][j] - cols.dN[i][j] * wGtdN[j] + cG[j] * cols.G[i][j] + cb[j] * D[i][j];
     }
   }
   for (int k = 0; k < 4; k++)
@@ -302,8 +302,8 @@ PetscErrorCode FluidJacobian(const FluidForms &fb, const PetscScalar *x, Mat P)
       const PetscReal w = fb.rule.w[q] * g.detE * m.J;
       PetscReal cGradN[10]; /* (u - w) . grad N_b */
       for (int b = 0; b < 10; b++) cGradN[b] = (p.u[0] - p.w[0]) * m.dN[b][0] + (p.u[1] - p.w[1]) * m.dN[b][1] + (p.u[2] - p.w[2]) * m.dN[b][2];
-      Columns c;
-      ColumnsAt(N, m, p, c);
+      Columns cols;
+      ColumnsAt(N, m, p, cols);
       /* K_(ai)(bk) = delta_ik [N_a (mass N_b + rho (u - w).grad N_b) + mu grad N_a . grad N_b] + rho N_a N_b du_i/dx_k + mu dN_b/dx_i dN_a/dx_k */
       for (int a = 0; a < 10; a++) {
         const PetscReal wrN = w * fb.rho * N[a];
@@ -315,7 +315,7 @@ PetscErrorCode FluidJacobian(const FluidForms &fb, const PetscScalar *x, Mat P)
         }
         for (int i = 0; i < 3; i++) {
           PetscReal *row = &K[(3 * a + i) * n];
-          for (int j = 0; j < 30; j++) row[j] += wrN * c.N[j] * c.G[i][j] + c.dN[i][j] * wmudNa[j];
+          for (int j = 0; j < 30; j++) row[j] += wrN * cols.N[j] * cols.G[i][j] + cols.dN[i][j] * wmudNa[j];
           for (int b = 0; b < 10; b++) row[3 * b + i] += diag[b];
         }
       }
@@ -331,7 +331,7 @@ PetscErrorCode FluidJacobian(const FluidForms &fb, const PetscScalar *x, Mat P)
           fb.force(m.x, fb.time, b);
           ForceGradient(fb, m.x, DifferenceStep(g), b, db);
         }
-        VolumeShapeDerivatives(fb, N, l, m, p, c, cGradN, w, wRate, b, db, S);
+        VolumeShapeDerivatives(fb, N, l, m, p, cols, cGradN, w, wRate, b, db, S);
       }
     }
     PetscCall(AddElementMatrix(P, n, idx, n, idx, K));
