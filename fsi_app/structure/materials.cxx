@@ -107,26 +107,87 @@ static void StressFromEnergy(const PetscReal F[9], const PetscReal *p, PetscReal
   FirstPiola(F, S, P);
 }
 
+/* dPsi/dc (g) and d2Psi/dc2 (H) by nested forward-mode differentiation. */
+template <template <class> class Energy>
+struct EnergyDerivatives {
+  static void Eval(const PetscReal c[6], const PetscReal *p, PetscReal g[6], PetscReal H[6][6])
+  {
+    using D  = Dual<6>;
+    using DD = Dual<6, D>;
+    DD cd[6];
+    for (int k = 0; k < 6; k++) {
+      D inner(c[k]);
+      inner.d[k] = 1;
+      cd[k]      = DD(inner, 0);
+      cd[k].d[k] = D(1.0);
+    }
+    const DD psi = Energy<DD>::Eval(cd, p);
+    for (int a = 0; a < 6; a++) {
+      g[a] = psi.d[a].v;
+      for (int b = 0; b < 6; b++) H[a][b] = psi.d[a].d[b];
+    }
+  }
+};
+
+/* The arterial energy's by the chain rule through its invariants, about 10 times cheaper than
+   nested duals (the wall's tangent at every quadrature point of every Newton step): for each
+   term f(I) of invariants I(c), grad f = f' grad I and H f = f'' grad I grad I^T + f' H I, with
+   grad I1 = (1,1,1,0,0,0); I3 = det C: grad the cofactors, H linear in c; J4 = a.C a linear;
+   J5 = |B c|^2 with (B c)_i = (C a)_i, so H J5 = 2 B^T B. The same g and H as the energy's
+   nested duals to round-off. */
+template <>
+struct EnergyDerivatives<ArterialEnergy> {
+  static void AddOuter(PetscReal H[6][6], PetscReal s, const PetscReal u[6], const PetscReal v[6])
+  {
+    for (int a = 0; a < 6; a++)
+      for (int b = 0; b < 6; b++) H[a][b] += s * u[a] * v[b];
+  }
+  static void Eval(const PetscReal c[6], const PetscReal *p, PetscReal g[6], PetscReal H[6][6])
+  {
+    const PetscReal I1 = c[0] + c[1] + c[2], I3 = Det(c), e = p[2];
+    const PetscReal dI1[6] = {1, 1, 1, 0, 0, 0};
+    const PetscReal dI3[6] = {c[1] * c[2] - c[5] * c[5], c[0] * c[2] - c[4] * c[4], c[0] * c[1] - c[3] * c[3], 2 * (c[4] * c[5] - c[2] * c[3]), 2 * (c[3] * c[5] - c[1] * c[4]), 2 * (c[3] * c[4] - c[0] * c[5])};
+    const PetscReal HI3[6][6] = {{0, c[2], c[1], 0, 0, -2 * c[5]}, {c[2], 0, c[0], 0, -2 * c[4], 0}, {c[1], c[0], 0, -2 * c[3], 0, 0}, {0, 0, -2 * c[3], -2 * c[2], 2 * c[5], 2 * c[4]}, {0, -2 * c[4], 0, 2 * c[5], -2 * c[1], 2 * c[3]}, {-2 * c[5], 0, 0, 2 * c[4], 2 * c[3], -2 * c[0]}};
+    /* c1 I1 q - 3 c1, q = I3^(-1/3); eps1 (I3^e + I3^(-e) - 2) */
+    const PetscReal q = 1 / std::cbrt(I3), dq = -q / (3 * I3), ddq = 4 * q / (9 * I3 * I3);
+    const PetscReal Ie = std::pow(I3, e), dh = e * (Ie - 1 / Ie) / I3, ddh = (e * (e - 1) * Ie + e * (e + 1) / Ie) / (I3 * I3);
+    const PetscReal c1 = p[0], eps1 = p[1], s3 = c1 * I1 * dq + eps1 * dh; /* the factor of grad I3 and of H I3 */
+    for (int a = 0; a < 6; a++) {
+      g[a] = c1 * q * dI1[a] + s3 * dI3[a];
+      for (int b = 0; b < 6; b++) H[a][b] = s3 * HI3[a][b] + (c1 * I1 * ddq + eps1 * ddh) * dI3[a] * dI3[b];
+    }
+    AddOuter(H, c1 * dq, dI1, dI3);
+    AddOuter(H, c1 * dq, dI3, dI1);
+    for (int f = 0; f < 2; f++) { /* alpha1 <m>^alpha2, m = I1 J4 - J5 - 2 */
+      const PetscReal *a     = &p[ARTERIAL_FIBRES + 3 * f];
+      const PetscReal  B[3][6] = {{a[0], 0, 0, a[1], a[2], 0}, {0, a[1], 0, a[0], 0, a[2]}, {0, 0, a[2], 0, a[0], a[1]}}; /* C a = B c */
+      PetscReal        Ca[3], dJ4[6], dm[6];
+      for (int i = 0; i < 3; i++) Ca[i] = B[i][0] * c[0] + B[i][1] * c[1] + B[i][2] * c[2] + B[i][3] * c[3] + B[i][4] * c[4] + B[i][5] * c[5];
+      const PetscReal J4 = a[0] * Ca[0] + a[1] * Ca[1] + a[2] * Ca[2], J5 = Ca[0] * Ca[0] + Ca[1] * Ca[1] + Ca[2] * Ca[2], m = I1 * J4 - J5 - 2;
+      if (!(m > 0)) continue; /* the Macaulay bracket: fibres carry no compression */
+      for (int k = 0; k < 6; k++) {
+        dJ4[k] = 0;
+        for (int i = 0; i < 3; i++) dJ4[k] += a[i] * B[i][k];
+      }
+      for (int k = 0; k < 6; k++) dm[k] = J4 * dI1[k] + I1 * dJ4[k] - 2 * (B[0][k] * Ca[0] + B[1][k] * Ca[1] + B[2][k] * Ca[2]);
+      const PetscReal mp = p[3] * std::pow(m, p[4]), dk = p[4] * mp / m, ddk = p[4] * (p[4] - 1) * mp / (m * m);
+      for (int k = 0; k < 6; k++) g[k] += dk * dm[k];
+      AddOuter(H, ddk, dm, dm);
+      AddOuter(H, dk, dI1, dJ4);
+      AddOuter(H, dk, dJ4, dI1);
+      for (int k = 0; k < 6; k++)
+        for (int l = 0; l < 6; l++) H[k][l] -= 2 * dk * (B[0][k] * B[0][l] + B[1][k] * B[1][l] + B[2][k] * B[2][l]);
+    }
+  }
+};
+
 /* A_iJkL = d P_iJ / d F_kL = delta_ik S_JL + F_iI F_kK 4 d2Psi/dC_IJ dC_KL. */
 template <template <class> class Energy>
 static void TangentFromEnergy(const PetscReal F[9], const PetscReal *p, PetscReal A[81])
 {
-  using D  = Dual<6>;
-  using DD = Dual<6, D>;
   PetscReal c[6], g[6], S[9], H[6][6], C4[81], FC[81];
-  DD        cd[6];
   RightCauchyGreen(F, c);
-  for (int k = 0; k < 6; k++) {
-    D inner(c[k]);
-    inner.d[k] = 1;
-    cd[k]      = DD(inner, 0);
-    cd[k].d[k] = D(1.0);
-  }
-  const DD psi = Energy<DD>::Eval(cd, p);
-  for (int a = 0; a < 6; a++) {
-    g[a] = psi.d[a].v;
-    for (int b = 0; b < 6; b++) H[a][b] = psi.d[a].d[b];
-  }
+  EnergyDerivatives<Energy>::Eval(c, p, g, H);
   SecondPiola(g, S);
   for (int I = 0; I < 3; I++) /* C4_IJKL = 4 w_IJ w_KL H, w = 1/2 off the diagonal */
     for (int J = 0; J < 3; J++)
