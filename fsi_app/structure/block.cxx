@@ -65,7 +65,7 @@ PetscErrorCode StructureBlock::ReadOptions(std::map<std::string, std::string> &p
     PetscCall(r.Choice("-structure_pc_setup", "when the structure split's preconditioner is rebuilt (auto: once for a linear wall, every time step otherwise)", policies, &policy, RUN));
     o.pcSetUp = policy == 3 ? -1 : policy;
   }
-  PetscCall(r.Int("-structure_pc_setup_interval", "with every_step (the nonlinear wall's default): the structure split's preconditioner rebuilt at every k-th time step of the run, kept in between", &o.pcSetUpInterval, AtLeast(1), RUN));
+  PetscCall(r.Int("-structure_pc_setup_interval", "with every_step (the nonlinear wall's default): the structure split's preconditioner rebuilt at every k-th Newton solve of the run (a time step; one halved after a failed Newton counts again), kept in between", &o.pcSetUpInterval, AtLeast(1), RUN));
   PetscCall(r.Points("-structure_probes", "points x1,y1,z1,x2,... (at most 20, reference configuration) where the wall's displacement is recorded every step (in the run report)", o.probes));
   PetscCall(r.Real("-mms_amplitude", "-mms: the amplitude a of the manufactured displacement d = a sin(pi x)sin(pi y)sin(pi z)(1,1,1) on the unit cube (cm)", &o.mmsAmplitude, Any, PROBLEM));
   n = 2;
