@@ -20,6 +20,7 @@ int main(int argc, char **argv)
   std::vector<char *>      expanded{argv[0]};
   int                      rank;
 
+  std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ); /* whole lines: a job log that merges stderr into stdout is not cut mid-line by an error */
   MPI_Init(&argc, &argv); /* before PETSc: its own reader of options files cannot be stopped on a cycle */
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   const std::string error = fsi::ExpandOptionsFiles(args);

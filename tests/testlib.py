@@ -38,11 +38,11 @@ def case(f):
     return f
 
 
-def run(cmd, np=1, fail=False):
-    """Run cmd on np ranks; return its output. fail=True expects a nonzero exit status, None
-    accepts either."""
+def run(cmd, np=1, fail=False, stderr=True):
+    """Run cmd on np ranks; return its output (stderr merged into it unless stderr=False).
+    fail=True expects a nonzero exit status, None accepts either."""
     full = ["mpiexec", "-n", str(np)] + [str(c) for c in cmd]
-    p = subprocess.run(full, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=500, cwd=TOP)  # scenes name files from the top
+    p = subprocess.run(full, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT if stderr else subprocess.DEVNULL, text=True, timeout=500, cwd=TOP)  # scenes name files from the top
     print("$", " ".join(full), "\n" + p.stdout[-3000:])
     assert fail is None or (p.returncode != 0) == fail, f"exit status {p.returncode}, expected {'failure' if fail else 'success'}"
     return p.stdout
