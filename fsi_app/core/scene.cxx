@@ -31,6 +31,7 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(opt.String("-mesh", "gmsh mesh file (named in an options file: relative to that file)", sc.mesh, sizeof(sc.mesh), PROBLEM));
   PetscCall(opt.Int("-refine", "uniform refinements of the mesh after distribution (each multiplies the cells by 8)", &sc.refine, NonNegative, PROBLEM));
   PetscCall(opt.Int("-mesh_order", "the cells' geometry: 2 curved (isoparametric P2) by the file's second-order nodes, 1 straight (the vertices only), 0 as the file is", &sc.meshOrder, Range{0, 2}, PROBLEM));
+  PetscCall(opt.Bool("-mesh_reorder", "number the mesh's points by reverse Cuthill-McKee of its cells before distributing them, so that a cell's unknowns lie near each other in vectors and matrices (the Jacobian's assembly and products run from cache); false: the file's order", &sc.meshReorder, PROBLEM));
   PetscCall(opt.Real("-dt", "time step (s); 0 solves the static problem", &sc.dt, NonNegative, RUN)); /* the checkpoint's header compares it */
   PetscCall(opt.Real("-t_final", "end time (s), a whole number of steps", &sc.tFinal, NonNegative, RUN));
   PetscCall(opt.Enum("-time_scheme", "differences in time for the inertia", TimeSchemeNames, &sc.scheme, RUN));

@@ -14,9 +14,10 @@ namespace fsi {
 struct Scene {
   std::vector<std::string> blocks; /* the blocks a scene solves (run/registry.h) */
   /* mesh */
-  char     mesh[PETSC_MAX_PATH_LEN] = "meshes/cube_L0.msh";
-  PetscInt refine                   = 0;
-  PetscInt meshOrder                = 0; /* the cells' geometry: 0 as the file is, 1 straight, 2 curved */
+  char      mesh[PETSC_MAX_PATH_LEN] = "meshes/cube_L0.msh";
+  PetscInt  refine                   = 0;
+  PetscInt  meshOrder                = 0;          /* the cells' geometry: 0 as the file is, 1 straight, 2 curved */
+  PetscBool meshReorder              = PETSC_TRUE; /* the points numbered by RCM of the cells before distribution */
   /* time, or load increments in statics */
   PetscReal  dt = 0, tFinal = 0.01;
   PetscInt   loadSteps = 1, maxCuts = 4;

@@ -205,7 +205,25 @@ PetscBool MeshEdgeNode(DM dm, const PetscReal a[3], const PetscReal b[3], PetscR
   return PETSC_TRUE;
 }
 
-PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, PetscInt order, const std::vector<GroupUse> &uses, const std::vector<std::string> &regions, DM *dm)
+/* The serial mesh renumbered by reverse Cuthill-McKee of its cells (vertices and edges in the
+   order the cells first reach them). PETSc 3.18's DMPlexPermute keeps no point SF, so this runs
+   before distribution, where the mesh has none. The gmsh file's own order scatters a cell's
+   vertices over the whole mesh, and the Jacobian's element insertion missed the cache on them. */
+static PetscErrorCode Reorder(DM *dm)
+{
+  IS perm;
+  DM permuted;
+
+  PetscFunctionBegin;
+  PetscCall(DMPlexGetOrdering(*dm, MATORDERINGRCM, nullptr, &perm));
+  PetscCall(DMPlexPermute(*dm, perm, &permuted));
+  PetscCall(ISDestroy(&perm));
+  PetscCall(DMDestroy(dm));
+  *dm = permuted;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, PetscInt order, PetscBool reorder, const std::vector<GroupUse> &uses, const std::vector<std::string> &regions, DM *dm)
 {
   PetscBool           set;
   int                 fileOrder = 1;
@@ -223,6 +241,7 @@ PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, PetscInt order, 
   if (!set) PetscCall(PetscOptionsSetValue(nullptr, "-dm_plex_gmsh_use_regions", "true")); /* labels named by physical groups */
   PetscCall(PetscOptionsSetValue(nullptr, "-dm_plex_gmsh_highorder", "false")); /* the vertices; the curved edges below */
   PetscCall(DMPlexCreateGmshFromFile(comm, file.c_str(), PETSC_TRUE, dm));
+  if (reorder) PetscCall(Reorder(dm));
   PetscCall(PetscObjectSetName((PetscObject)*dm, "mesh"));
   PetscCall(DistributeWithMetis(dm, regions));
   if (fileOrder == 2 && order != 1) PetscCall(AttachCurvedEdges(comm, bent, *dm));

@@ -25,8 +25,10 @@ struct GroupUse {
    cell dual graph, balancing the cells of each of `regions` when there are several). Errors
    name the file, the line or the option and group, and what the file has. `order` is the
    cells' geometry (-mesh_order): 2 curved by the file's second-order nodes (which it must
-   have), 1 straight whatever the file has, 0 as the file is. */
-PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, PetscInt order, const std::vector<GroupUse> &uses, const std::vector<std::string> &regions, DM *dm);
+   have), 1 straight whatever the file has, 0 as the file is. With `reorder` the points are
+   numbered by reverse Cuthill-McKee of the cells before distribution (each rank's share keeps
+   that order): a cell's unknowns then lie near each other in every vector and matrix. */
+PetscErrorCode LoadMesh(MPI_Comm comm, const std::string &file, PetscInt order, PetscBool reorder, const std::vector<GroupUse> &uses, const std::vector<std::string> &regions, DM *dm);
 
 /* The node of a curved edge of dm (the file's second-order node, LoadMesh with order != 1),
    found by its vertices' coordinates a and b; false for a straight edge. PETSc keeps the

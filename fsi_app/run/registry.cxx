@@ -63,7 +63,7 @@ PetscErrorCode CreateSceneMesh(const Scene &sc, const Blocks &b, DM *dm)
     PetscCheck(!g.group.empty() || g.dim == 3 || g.optional, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s: the value is empty; name a physical group of faces of %s", g.option.c_str(), sc.mesh);
   for (const auto &g : groups) /* "boundary" is made below; a group named by the same option twice is checked once */
     if (!g.group.empty() && g.group != "boundary" && std::none_of(required.begin(), required.end(), [&](const GroupUse &r) { return r.group == g.group && r.option == g.option; })) required.push_back(g);
-  PetscCall(LoadMesh(PETSC_COMM_WORLD, sc.mesh, sc.meshOrder, required, regions, dm));
+  PetscCall(LoadMesh(PETSC_COMM_WORLD, sc.mesh, sc.meshOrder, sc.meshReorder, required, regions, dm));
   PetscCheck(!sc.refine || !MeshIsCurved(*dm), PETSC_COMM_WORLD, PETSC_ERR_SUP, "-refine %" PetscInt_FMT " on the curved cells of '%s': refinement would place the new nodes on the straight edges; make a finer second-order mesh (scripts/make-meshes NAME LEVEL 2) or read this one with -mesh_order 1", sc.refine, sc.mesh);
   if (sc.refine > 0) { /* each refinement makes 8 tetrahedra of one; a tetrahedral mesh has about 4.3 points (cells, faces, edges, vertices) per cell */
     PetscInt  cStart, cEnd;

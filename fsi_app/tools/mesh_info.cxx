@@ -23,7 +23,7 @@ int main(int argc, char **argv)
     required.push_back({s.substr(0, k), "-require"});
     s = k == std::string::npos ? "" : s.substr(k + 1);
   }
-  PetscCall(fsi::LoadMesh(PETSC_COMM_WORLD, file, 0, required, {}, &dm));
+  PetscCall(fsi::LoadMesh(PETSC_COMM_WORLD, file, 0, PETSC_FALSE, required, {}, &dm));
   PetscCall(DMGetNumLabels(dm, &n)); /* the groups: the closure labels made below come after them */
   for (PetscInt i = 0; i < n; i++) {
     const char *name;
