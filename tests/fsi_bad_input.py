@@ -252,7 +252,8 @@ def coupled_bad_input():
     and the wall, a no-slip interface, a static coupled run, an incomplete or unknown block
     list, a probe outside the fluid, FaCSI's fluid PC told a multiplier field the split does not
     have, a direct solver out of workspace (alone and inside a field split), a fluid mesh that
-    inverts under a soft wall: a sentence naming the cause."""
+    inverts under a soft wall, a scene with no solver (PETSc's default ILU stopped at the
+    multiplier's missing diagonal entry with its own trace): a sentence naming the cause."""
     cases = ((["-mesh", os.path.join(MESHES, "cube_L0.msh")], "has no physical group"),
              (["-geometry_interface", "outer_wall"], "-geometry_interface outer_wall: the group's faces must lie between cells of -fluid_region fluid and of -structure_region wall"),
              (["-fluid_noslip", "interface"], "-fluid_noslip interface: on the interface interface the fluid moves with the wall"),
@@ -275,6 +276,8 @@ def coupled_bad_input():
         out = run([APP, "-options_file", FSI] + [str(o) for o in opts], 2, fail=True)
         assert msg in out, (msg, out[-2000:])
         assert not re.search(r"\bnan\b", out, re.I)
+    refused([APP, "-options_file", os.path.join(SCENES, "fsi_tube1.opts"), "-t_final", 5e-4],
+            "-pc_type: not given, and PETSc's default (ILU) cannot factor the coupled system (the Lagrange multiplier's rows have no diagonal entry): choose a solver", np=2)
 
 
 @case

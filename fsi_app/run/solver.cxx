@@ -1,7 +1,26 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "solver.h"
+#include <algorithm>
+#include <string>
 
 namespace fsi {
+
+/* The Lagrange multiplier's rows have no diagonal entry, so PETSc's default preconditioner (ILU,
+   or block Jacobi with ILU) stops at its first factorization; a scene without a solver is told
+   which to add before its first step. */
+static PetscErrorCode RefuseDefaultPC(KSP ksp, const Blocks &b)
+{
+  const char *prefix;
+  PetscBool   given;
+
+  PetscFunctionBegin;
+  if (std::none_of(b.list.begin(), b.list.end(), [](const Block *blk) { return std::string(blk->Name()) == "coupling"; })) PetscFunctionReturn(0);
+  PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
+  PetscCall(PetscOptionsHasName(nullptr, prefix, "-pc_type", &given));
+  PetscCheck(given, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
+             "-pc_type: not given, and PETSc's default (ILU) cannot factor the coupled system (the Lagrange multiplier's rows have no diagonal entry): choose a solver, e.g. -options_file scenes/fsi_mumps.opts (MUMPS) or scenes/fsi_facsi.opts (FaCSI with GDSW)");
+  PetscFunctionReturn(0);
+}
 
 /* Newton + the KSP/PC of the options database. A dynamic scene of linear blocks factors its
    operator once; rows with an energy take the critical-point line search (it does not reject
@@ -33,6 +52,7 @@ PetscErrorCode CreateSolver(const Scene &sc, DM dm, const Blocks &b, SNES *snes)
     PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHCP));
   }
   PetscCall(SNESGetKSP(*snes, &ksp));
+  PetscCall(RefuseDefaultPC(ksp, b));
   /* a Krylov solve that needs more iterations has failed (an indefinite tangent far from the
      solution): the step is halved instead of iterating for minutes (PETSc's default is 10000) */
   PetscCall(KSPSetTolerances(ksp, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 500));
