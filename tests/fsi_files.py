@@ -181,7 +181,8 @@ def output_faults():
 @case
 def restart_bad():
     """A restart from a truncated checkpoint, from a file that is not one, and with other
-    boundary conditions (the same number of unknowns) or another modulus: a sentence naming
+    boundary conditions (the same number of unknowns), another modulus or another numbering of
+    the mesh's points (-mesh_reorder): a sentence naming
     the file and what differs; the same problem with other solver options restarts. A run that
     ends at or before the checkpoint's step, a checkpoint with one byte changed (its size
     intact), and a mesh file whose nodes moved under the same name: a sentence each."""
@@ -199,6 +200,8 @@ def restart_bad():
     refused(resume + ["-structure_clamp", "x0", "-restart", mesh], f"-restart {mesh}: not an fsi_app checkpoint")
     refused(resume + ["-structure_clamp", "y0", "-restart", chk], f"-restart {chk}: written with -structure_clamp x0, this run has -structure_clamp y0")
     refused(resume + ["-structure_clamp", "x0", "-structure_E", 2, "-restart", chk], f"-restart {chk}: written with -structure_E 1, this run has -structure_E 2")
+    # another numbering of the points would read the stored states in the wrong order
+    refused(resume + ["-structure_clamp", "x0", "-mesh_reorder", "false", "-restart", chk], f"-restart {chk}: written with -mesh_reorder true, this run has -mesh_reorder false")
     out = run(resume + ["-structure_clamp", "x0", "-restart", chk, "-ksp_type", "cg", "-pc_type", "jacobi", "-ksp_rtol", 1e-10])
     assert "restart from" in out and "step 4/4" in out, out
     # a run that would end where the checkpoint is, or before (exit 0 with nothing done, before)
