@@ -57,7 +57,7 @@ static void Run(const char *file, int dtype, const char *name)
     const double xi = dtype == CHOLMOD_SINGLE ? ((float *)x->x)[i] : ((double *)x->x)[i];
     if (fabs(xi - 1) > err) err = fabs(xi - 1);
   }
-  printf("%s %s: analysis %.3f s, factorisation %.3f s (the first %.3f s), solve %.2f ms, factor entries %.0f, max |x - 1| %.1e (status %d)\n", file, name, t1 - t0, best, first, (t3 - t2) * 100, c.lnz, err, c.status);
+  printf("%s %s: analysis %.3f s, factorisation %.3f s (the first %.3f s), solve %.2f ms, factor entries %.0f, flops %.2e, max |x - 1| %.1e (status %d)\n", file, name, t1 - t0, best, first, (t3 - t2) * 100, c.lnz, c.fl, err, c.status);
   cholmod_free_dense(&x, &c);
   cholmod_free_dense(&b, &c);
   cholmod_free_dense(&one, &c);
