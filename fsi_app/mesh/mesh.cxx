@@ -207,8 +207,9 @@ PetscBool MeshEdgeNode(DM dm, const PetscReal a[3], const PetscReal b[3], PetscR
 
 /* The serial mesh renumbered by reverse Cuthill-McKee of its cells (vertices and edges in the
    order the cells first reach them). PETSc 3.18's DMPlexPermute keeps no point SF, so this runs
-   before distribution, where the mesh has none. The gmsh file's own order scatters a cell's
-   vertices over the whole mesh, and the Jacobian's element insertion missed the cache on them. */
+   before distribution, where the mesh has none. A gmsh file's own order may scatter a cell's
+   vertices over the whole mesh (the tubes' files do), and the Jacobian's element insertion
+   then misses the cache on them. */
 static PetscErrorCode Reorder(DM *dm)
 {
   IS perm;
