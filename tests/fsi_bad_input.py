@@ -277,7 +277,7 @@ def coupled_bad_input():
         assert msg in out, (msg, out[-2000:])
         assert not re.search(r"\bnan\b", out, re.I)
     refused([APP, "-options_file", os.path.join(SCENES, "fsi_tube1.opts"), "-t_final", 5e-4],
-            "-pc_type: not given, and PETSc's default (ILU) cannot factor the coupled system (the Lagrange multiplier's rows have no diagonal entry): choose a solver", np=2)
+            "-pc_type: not given, and PETSc's default (ILU) cannot factor the rows of the coupling block (they have no diagonal entry): choose a solver", np=2)
 
 
 @case

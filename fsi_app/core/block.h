@@ -98,6 +98,8 @@ public:
      extension's): assembled once, its values kept (core/constant_rows.h). */
   virtual PetscBool ConstantJacobian() const { return PETSC_FALSE; }
   virtual PetscBool HasEnergy() const { return PETSC_FALSE; }
+  /* Rows with no diagonal entry (a Lagrange multiplier's): PETSc's default ILU cannot factor them. */
+  virtual PetscBool RowsWithoutDiagonal() const { return PETSC_FALSE; }
   /* The preconditioner of its rows: pc solves them (the whole system when the block is the
      scene's only one, its split of PCFIELDSPLIT otherwise) and dm holds exactly that split's
      fields; *nsp (or NULL) is the rows' near-null space, attached by the caller. */

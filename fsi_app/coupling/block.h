@@ -40,6 +40,7 @@ public:
   const char           *SplitName() const override { return "fluid"; }
   std::vector<PetscInt> SplitFields() const override { return {field}; }
   void                  Unknowns(std::vector<std::pair<std::string, PetscInt>> &u) const override { u.push_back({"multiplier", field}); }
+  PetscBool             RowsWithoutDiagonal() const override { return PETSC_TRUE; } /* lambda's rows hold only u - d_t d_s */
 
   PetscErrorCode Results(DM dm, Vec x, PetscReal t, RunReport &report) override;
 

@@ -1,24 +1,24 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "solver.h"
 #include <algorithm>
-#include <string>
 
 namespace fsi {
 
-/* The Lagrange multiplier's rows have no diagonal entry, so PETSc's default preconditioner (ILU,
-   or block Jacobi with ILU) stops at its first factorization; a scene without a solver is told
-   which to add before its first step. */
+/* A block's rows without a diagonal entry stop PETSc's default preconditioner (ILU, or block
+   Jacobi with ILU) at its first factorization: a scene without a solver is told which to add
+   before its first step. */
 static PetscErrorCode RefuseDefaultPC(KSP ksp, const Blocks &b)
 {
   const char *prefix;
   PetscBool   given;
+  const auto  blk = std::find_if(b.list.begin(), b.list.end(), [](const Block *x) { return x->RowsWithoutDiagonal(); });
 
   PetscFunctionBegin;
-  if (std::none_of(b.list.begin(), b.list.end(), [](const Block *blk) { return std::string(blk->Name()) == "coupling"; })) PetscFunctionReturn(0);
+  if (blk == b.list.end()) PetscFunctionReturn(0);
   PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
   PetscCall(PetscOptionsHasName(nullptr, prefix, "-pc_type", &given));
   PetscCheck(given, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
-             "-pc_type: not given, and PETSc's default (ILU) cannot factor the coupled system (the Lagrange multiplier's rows have no diagonal entry): choose a solver, e.g. -options_file scenes/fsi_mumps.opts (MUMPS) or scenes/fsi_facsi.opts (FaCSI with GDSW)");
+             "-pc_type: not given, and PETSc's default (ILU) cannot factor the rows of the %s block (they have no diagonal entry): choose a solver, e.g. -options_file scenes/fsi_mumps.opts (MUMPS) or scenes/fsi_facsi.opts (FaCSI with GDSW)", (*blk)->Name());
   PetscFunctionReturn(0);
 }
 
