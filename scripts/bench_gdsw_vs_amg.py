@@ -64,7 +64,7 @@ METHODS = {
     "gdsw incomplete": f"{GDSW} -pc_gdsw_local_solver incomplete",
     "gdsw incomplete, RGDSW": f"{GDSW} -pc_gdsw_local_solver incomplete -pc_gdsw_coarse_space rgdsw",
     "gdsw adaptive": f"{GDSW} -pc_gdsw_local_solver adaptive",
-    "gdsw adaptive, RGDSW": f"{GDSW} -pc_gdsw_local_solver adaptive -pc_gdsw_coarse_space rgdsw",
+    "gdsw adaptive, RGDSW": f"{GDSW} -pc_gdsw_configuration fast",
     "GAMG": "-pc_type gamg",
     "ML": "-pc_type ml",
     "BoomerAMG": "-pc_type hypre",

@@ -49,6 +49,7 @@ static PetscErrorCode PrintSettings(PC pc)
   PCGDSWFirstLevelType  first;
   PCGDSWLocalSolverType local;
   PCGDSWLocalPrecision  precision;
+  PCGDSWConfiguration   configuration;
   PetscReal             conditionMax;
   PetscBool             rotations, reuse, repartition, huge;
 
@@ -67,9 +68,10 @@ static PetscErrorCode PrintSettings(PC pc)
   PetscCall(PCGDSWGetLocalConditionMax(pc, &conditionMax));
   PetscCall(PCGDSWGetHugePages(pc, &huge));
   PetscCall(PCGDSWGetLocalPrecision(pc, &precision));
+  PetscCall(PCGDSWGetConfiguration(pc, &configuration));
   const char *const combinationName = combination == PC_COMPOSITE_ADDITIVE ? "additive" : combination == PC_COMPOSITE_MULTIPLICATIVE ? "multiplicative" : "symmetric_multiplicative";
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "settings: subdomains %" PetscInt_FMT " repartition %d subdomain_size %" PetscInt_FMT " overlap %" PetscInt_FMT " coarse_space %s rgdsw_weights %s rotations %d combination %s first_level_type %s reuse_coarse_basis %d local_solver %s local_condition_max %g local_precision %s huge_pages %d\n",
-                        nsub, (int)repartition, size, overlap, PCGDSWCoarseSpaceTypes[coarse], PCGDSWRGDSWWeightTypes[weights], (int)rotations, combinationName, PCGDSWFirstLevelTypes[first], (int)reuse, PCGDSWLocalSolverTypes[local], (double)conditionMax, PCGDSWLocalPrecisions[precision], (int)huge));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "settings: subdomains %" PetscInt_FMT " repartition %d subdomain_size %" PetscInt_FMT " overlap %" PetscInt_FMT " coarse_space %s rgdsw_weights %s rotations %d combination %s first_level_type %s reuse_coarse_basis %d local_solver %s local_condition_max %g local_precision %s huge_pages %d configuration %s\n",
+                        nsub, (int)repartition, size, overlap, PCGDSWCoarseSpaceTypes[coarse], PCGDSWRGDSWWeightTypes[weights], (int)rotations, combinationName, PCGDSWFirstLevelTypes[first], (int)reuse, PCGDSWLocalSolverTypes[local], (double)conditionMax, PCGDSWLocalPrecisions[precision], (int)huge, PCGDSWConfigurations[configuration]));
   PetscFunctionReturn(0);
 }
 
@@ -217,6 +219,7 @@ static PetscErrorCode ChangeOne(PC pc)
   else if (what == "combination") PetscCall(PCGDSWSetCombinationType(pc, PC_COMPOSITE_ADDITIVE));
   else if (what == "first_level_type") PetscCall(PCGDSWSetFirstLevelType(pc, PC_GDSW_FIRST_LEVEL_RESTRICTED));
   else if (what == "local_solver") PetscCall(PCGDSWSetLocalSolverType(pc, PC_GDSW_LOCAL_INCOMPLETE));
+  else if (what == "configuration") PetscCall(PCGDSWSetConfiguration(pc, PC_GDSW_CONFIGURATION_FAST));
   else SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-set %s is not one of the setters listed by -help", name);
   PetscFunctionReturn(0);
 }

@@ -92,6 +92,7 @@ def bad_option_values():
                             ("reuse_coarse_basis", 2, "is not true or false"),
                             ("huge_pages", "often", "is not true or false"),
                             ("local_solver", "fast", "is not one of: exact, incomplete, adaptive"),
+                            ("configuration", "quick", "is not one of: robust, fast"),
                             ("local_precision", "half", "is not one of: double, single"),
                             ("local_condition_max", "big", "is not a number: give the largest condition number estimate"),
                             ("local_condition_max", "inf", "is not a number: give the largest condition number estimate"),
@@ -141,7 +142,7 @@ def view_and_log():
     out = run([ELASTICITY, "-n", 4, "-boxes", 2, "-help"])
     for opt, default in (("subdomains", "-1"), ("overlap", "1"), ("coarse_space", "gdsw"), ("rgdsw_weights", "distance"), ("rotations", "TRUE"), ("repartition", "FALSE"),
                          ("combination", "symmetric_multiplicative"), ("first_level_type", "additive"), ("reuse_coarse_basis", "FALSE"), ("huge_pages", "TRUE"),
-                         ("local_solver", "exact"), ("local_condition_max", "25."), ("local_precision", "double"), ("subdomain_size", "12000")):
+                         ("configuration", "robust"), ("local_solver", "exact"), ("local_condition_max", "25."), ("local_precision", "double"), ("subdomain_size", "12000")):
         # PETSc 3.18 prints "-opt <now v" ("-opt: <v" for booleans, "-opt <v" for reals), 3.22 "-opt: <now v"
         assert re.search(rf"-pc_gdsw_{opt}:? <(now )?{re.escape(default)}", out), f"missing in -help: -pc_gdsw_{opt} <{default}"
     for s in ("-pc_gdsw_sub_pc_type", "-pc_gdsw_extension_pc_type", "-pc_gdsw_coarse_pc_type"):
@@ -204,7 +205,7 @@ def api_setters_reset():
     (iterations, overlapping dofs, coarse dimension) and differs from the first solve (2 ranks,
     default size rule: one subdomain per rank)."""
     for name, value in (("subdomains", 4), ("subdomain_size", 200), ("overlap", 2), ("coarse_space", "none"),
-                        ("combination", "additive"), ("first_level_type", "restricted"), ("local_solver", "incomplete")):
+                        ("combination", "additive"), ("first_level_type", "restricted"), ("local_solver", "incomplete"), ("configuration", "fast")):
         r = api_lines("-case", "setters", "-set", name, np=2)
         fresh = api_lines("-case", "transpose", f"-pc_gdsw_{name}", value, np=2)["forward"]
         keys = ("iterations", "overlap_dofs", "coarse")
@@ -218,7 +219,7 @@ def api_getters():
     """Every -pc_gdsw_* option reaches its setter: the getters return what the options say."""
     opts = {"subdomains": 3, "repartition": 1, "subdomain_size": 500, "overlap": 2, "coarse_space": "rgdsw", "rgdsw_weights": "equal",
             "rotations": 0, "combination": "multiplicative", "first_level_type": "restricted", "reuse_coarse_basis": 1,
-            "local_solver": "adaptive", "local_condition_max": 40.5, "local_precision": "double", "huge_pages": 0}
+            "local_solver": "adaptive", "local_condition_max": 40.5, "local_precision": "double", "huge_pages": 0, "configuration": "fast"}
     # the repartition by PETSc's own partitioner "average": PTScotch hangs in Debian 12's 64-bit-index PETSc
     args = ["-pc_gdsw_mat_partitioning_type", "average"]
     for k, v in opts.items():

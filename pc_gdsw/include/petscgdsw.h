@@ -54,7 +54,18 @@ typedef enum {
 } PCGDSWLocalPrecision;
 PETSC_EXTERN const char *const PCGDSWLocalPrecisions[];
 
+/* The local solvers and the coarse space together (PCGDSWSetConfiguration()). */
+typedef enum {
+  PC_GDSW_CONFIGURATION_ROBUST, /* exact local solvers, GDSW coarse space (the default) */
+  PC_GDSW_CONFIGURATION_FAST    /* adaptive local solvers, RGDSW coarse space: near an AMG's cost on benign elasticity, less robust */
+} PCGDSWConfiguration;
+PETSC_EXTERN const char *const PCGDSWConfigurations[];
+
 PETSC_EXTERN PetscErrorCode PCGDSWRegister(void);
+
+/* the configuration */
+PETSC_EXTERN PetscErrorCode PCGDSWSetConfiguration(PC, PCGDSWConfiguration);
+PETSC_EXTERN PetscErrorCode PCGDSWGetConfiguration(PC, PCGDSWConfiguration *);
 
 /* the decomposition */
 PETSC_EXTERN PetscErrorCode PCGDSWSetSubdomains(PC, PetscInt, IS[], IS[]);

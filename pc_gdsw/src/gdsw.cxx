@@ -4,7 +4,7 @@
        M^{-1} = Phi (Phi^T A Phi)^{-1} Phi^T + sum_i R_i^T A_i^{-1} R_i.
    This file holds the PC object: the operator's checks, the order of the setup modules, the
    solve's check of its KSP, apply and its transpose, view, creation and registration. The options are read in options.cxx, the public functions with the
-   methods they call are in api_subdomains.cxx, api_coarse_space.cxx and api_first_level.cxx. */
+   methods they call are in api_configuration.cxx, api_subdomains.cxx, api_coarse_space.cxx and api_first_level.cxx. */
 #include "gdswimpl.h"
 #include <algorithm>
 #include <string>
@@ -452,6 +452,7 @@ static PetscErrorCode PCDestroy_GDSW(PC pc)
   PetscCall(GDSWComposeSubdomainMethods(pc, PETSC_FALSE));
   PetscCall(GDSWComposeCoarseSpaceMethods(pc, PETSC_FALSE));
   PetscCall(GDSWComposeFirstLevelMethods(pc, PETSC_FALSE));
+  PetscCall(GDSWComposeConfigurationMethods(pc, PETSC_FALSE));
   PetscCall(PetscFree(pc->data));
   PetscFunctionReturn(0);
 }
@@ -470,7 +471,8 @@ static PetscErrorCode PCDestroy_GDSW(PC pc)
    (balanced), Q_0 + (I - Q_0 A) M_1 (I - A Q_0) (see `PCGDSWSetCombinationType()`).
 
    Options Database Keys:
-+  -pc_gdsw_subdomains <-1> - subdomains per MPI rank, METIS on the rank's node graph; -1 (`PETSC_DECIDE`): about -pc_gdsw_subdomain_size dofs each (see `PCGDSWSetSubdomainsPerRank()`)
++  -pc_gdsw_configuration <robust> - robust (exact local solvers, GDSW) or fast (adaptive local solvers, RGDSW: near an AMG's cost on benign elasticity, less robust); -pc_gdsw_local_solver and -pc_gdsw_coarse_space override it (see `PCGDSWSetConfiguration()`)
+.  -pc_gdsw_subdomains <-1> - subdomains per MPI rank, METIS on the rank's node graph; -1 (`PETSC_DECIDE`): about -pc_gdsw_subdomain_size dofs each (see `PCGDSWSetSubdomainsPerRank()`)
 .  -pc_gdsw_repartition <false> - the subdomains from a parallel partitioner of the whole matrix graph, not from each rank's rows (see `PCGDSWSetRepartition()`)
 .  -pc_gdsw_subdomain_size <12000> - the target number of dofs per subdomain of that rule; 3000 with incomplete or adaptive local solvers (see `PCGDSWSetSubdomainSize()`)
 .  -pc_gdsw_overlap <1> - layers of the matrix graph added to each subdomain (see `PCGDSWSetOverlap()`)
@@ -528,6 +530,7 @@ PETSC_EXTERN PetscErrorCode PCCreate_GDSW(PC pc)
   PetscFunctionBegin;
   PetscCall(PetscNew(&gd));
   pc->data             = gd;
+  gd->configuration    = PC_GDSW_CONFIGURATION_ROBUST;
   gd->nsubPerRank      = PETSC_DECIDE;
   gd->repartition      = PETSC_FALSE;
   gd->subdomainSize    = PETSC_DECIDE;
@@ -558,6 +561,7 @@ PETSC_EXTERN PetscErrorCode PCCreate_GDSW(PC pc)
   PetscCall(GDSWComposeSubdomainMethods(pc, PETSC_TRUE));
   PetscCall(GDSWComposeCoarseSpaceMethods(pc, PETSC_TRUE));
   PetscCall(GDSWComposeFirstLevelMethods(pc, PETSC_TRUE));
+  PetscCall(GDSWComposeConfigurationMethods(pc, PETSC_TRUE));
   PetscFunctionReturn(0);
 }
 

@@ -11,7 +11,7 @@
      gdsw.cxx           the operator's checks, setup order, the solve's check of its KSP, apply and
                         its transpose, view, creation, registration
      options.cxx        the -pc_gdsw_* options: one table row each, read and checked in one pass
-     api_subdomains.cxx, api_coarse_space.cxx, api_first_level.cxx
+     api_configuration.cxx, api_subdomains.cxx, api_coarse_space.cxx, api_first_level.cxx
                         the public functions with their manual pages, each beside the composed
                         method it calls
    and what the set-up asks of the machine and of PETSc, in platform/:
@@ -94,6 +94,7 @@ struct Subdomain {
 
 typedef struct {
   /* options */
+  PCGDSWConfiguration   configuration;    /* -pc_gdsw_configuration: the last one set */
   PetscInt              nsubPerRank;      /* -pc_gdsw_subdomains, or PETSC_DECIDE: the size rule */
   PetscBool             repartition;      /* -pc_gdsw_repartition: algebraic subdomains from a parallel partition of the whole graph */
   PetscInt              subdomainSize;    /* -pc_gdsw_subdomain_size: target dofs per subdomain of the rule, or PETSC_DECIDE: by the local solver */
@@ -161,6 +162,7 @@ PETSC_INTERN PetscErrorCode GDSWSetFromOptions(PC, PetscOptionItems *);
 PETSC_INTERN PetscErrorCode GDSWComposeSubdomainMethods(PC, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWComposeCoarseSpaceMethods(PC, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWComposeFirstLevelMethods(PC, PetscBool);
+PETSC_INTERN PetscErrorCode GDSWComposeConfigurationMethods(PC, PetscBool);
 PETSC_INTERN PetscErrorCode GDSWDestroyUserSubdomains(PC_GDSW *);
 PETSC_INTERN PetscErrorCode GDSWCheckSetUp(PC);
 PETSC_INTERN PetscErrorCode GDSWCheckEnum(PC, PetscEnum, PetscEnum, const char *const *);

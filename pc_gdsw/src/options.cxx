@@ -29,9 +29,13 @@ struct Option {
   PetscErrorCode (*set)(PC, Value);
 };
 
-/* -pc_gdsw_local_solver comes first: the size rule's default target, which -help shows for
-   -pc_gdsw_subdomain_size, depends on it. */
+/* -pc_gdsw_configuration comes first: it sets the defaults of -pc_gdsw_local_solver and
+   -pc_gdsw_coarse_space, which then override it; -pc_gdsw_local_solver next: the size rule's
+   default target, which -help shows for -pc_gdsw_subdomain_size, depends on it. */
 const Option Options[] = {
+  {"-pc_gdsw_configuration", "Local solvers and coarse space together: robust (exact, GDSW) or fast (adaptive, RGDSW: near an AMG's cost on benign elasticity, less robust); -pc_gdsw_local_solver and -pc_gdsw_coarse_space override it",
+   "PCGDSWSetConfiguration", OPTION_ELIST, PCGDSWConfigurations, nullptr,
+   [](PC pc, Value *v) { return PCGDSWGetConfiguration(pc, (PCGDSWConfiguration *)&v->e); }, [](PC pc, Value v) { return PCGDSWSetConfiguration(pc, (PCGDSWConfiguration)v.e); }},
   {"-pc_gdsw_local_solver", "First level's local solvers: exact factorisations, incomplete ones (ICC(0)/ILU(0)), or adaptive: incomplete where its condition estimate is at most -pc_gdsw_local_condition_max, exact elsewhere",
    "PCGDSWSetLocalSolverType", OPTION_ELIST, PCGDSWLocalSolverTypes, nullptr,
    [](PC pc, Value *v) { return PCGDSWGetLocalSolverType(pc, (PCGDSWLocalSolverType *)&v->e); }, [](PC pc, Value v) { return PCGDSWSetLocalSolverType(pc, (PCGDSWLocalSolverType)v.e); }},
