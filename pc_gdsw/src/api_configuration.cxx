@@ -41,8 +41,8 @@ static PetscErrorCode PCGDSWSetConfiguration_GDSW(PC pc, PCGDSWConfiguration c)
 
    The robust configuration is the method that holds on thin plates, coefficient jumps, nearly
    incompressible elasticity and the P2 walls of fluid-structure interaction. The fast one costs
-   1.1-2.3 times the best algebraic multigrid of PETSc on homogeneous 3D elasticity (the robust
-   one 2.6-6.6 times) and gives up robustness. CG iterations to 1e-8 on 2 ranks, robust against
+   0.9-1.9 times the best algebraic multigrid of PETSc on homogeneous 3D elasticity (the robust
+   one 1.5-4.1 times) and gives up robustness. CG iterations to 1e-8 on 2 ranks, robust against
    fast: homogeneous Q1 elasticity 38 against 62, Young's modulus jumping by 1e6 40 against 95,
    nu = 0.4999 134 against 301, ksp ex56's soft inclusion on 8 ranks 32 against 70.
    Use the fast one where the operator is close to homogeneous compressible elasticity.
