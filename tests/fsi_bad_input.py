@@ -253,7 +253,8 @@ def coupled_bad_input():
     list, a probe outside the fluid, FaCSI's fluid PC told a multiplier field the split does not
     have, a direct solver out of workspace (alone and inside a field split), a fluid mesh that
     inverts under a soft wall, a scene with no solver (PETSc's default ILU stopped at the
-    multiplier's missing diagonal entry with its own trace): a sentence naming the cause."""
+    multiplier's missing diagonal entry with its own trace), a direct solver out of memory inside
+    FaCSI's fluid step: a sentence naming the cause."""
     cases = ((["-mesh", os.path.join(MESHES, "cube_L0.msh")], "has no physical group"),
              (["-geometry_interface", "outer_wall"], "-geometry_interface outer_wall: the group's faces must lie between cells of -fluid_region fluid and of -structure_region wall"),
              (["-fluid_noslip", "interface"], "-fluid_noslip interface: on the interface interface the fluid moves with the wall"),
@@ -264,10 +265,14 @@ def coupled_bad_input():
              (["-options_file", FACSI, "-fieldsplit_fluid_pc_facsi_fluid_multiplier_field", "lambda"],
               "PCFACSIFLUID: the split has no field called lambda (-pc_facsi_fluid_multiplier_field)"),
              # MUMPS given no room beyond its analysis' estimate: the split and option to raise
-             (["-mat_mumps_icntl_14", 0, "-t_final", 5e-4, "-max_step_cuts", 0],
+             # (with no raise of its room allowed: fsi_workspace_raised has the raises)
+             (["-mat_mumps_icntl_14", 0, "-t_final", 5e-4, "-max_step_cuts", 0, "-max_workspace_raises", 0],
               "the linear solver failed in step 1: the factorization of -pc_type ran out of workspace (MUMPS: raise -mat_mumps_icntl_14"),
-             (["-options_file", os.path.join(SCENES, "fsi_fieldsplit.opts"), "-fieldsplit_fluid_mat_mumps_icntl_14", 0, "-t_final", 5e-4, "-max_step_cuts", 0],
+             (["-options_file", os.path.join(SCENES, "fsi_fieldsplit.opts"), "-fieldsplit_fluid_mat_mumps_icntl_14", 0, "-t_final", 5e-4, "-max_step_cuts", 0, "-max_workspace_raises", 0],
               "the factorization of -fieldsplit_fluid_pc_type ran out of workspace (MUMPS: raise -fieldsplit_fluid_mat_mumps_icntl_14"),
+             # MUMPS allowed 1 MB of working memory inside FaCSI's fluid step: the inner factorization named
+             (["-options_file", os.path.join(SCENES, "fsi_facsi_lu_fluid.opts"), "-fieldsplit_fluid_dirichlet_mat_mumps_icntl_23", 1, "-t_final", 5e-4, "-max_step_cuts", 0],
+              "the linear solver failed in step 1: the factorization of -fieldsplit_fluid_dirichlet_pc_type failed in mumps"),
              # a wall 1000 times softer under 750 times the pulse, full Newton steps: the fluid mesh
              # inverts on one rank, and both ranks stop with its cause (they used to part ways in the line search)
              (["-structure_E", 400, "-fluid_inlet_pressure", 1e6, "-t_final", 5e-4, "-max_step_cuts", 0, "-snes_linesearch_type", "basic"],

@@ -193,6 +193,26 @@ def fsi_fieldsplit():
 
 
 @case
+def fsi_workspace_raised():
+    """MUMPS given no room beyond its analysis' estimate (ICNTL(14) = 0) runs out of workspace
+    (INFOG(1) = -9), and a failed MUMPS factor refuses every later factorization of its pattern:
+    the step is repeated with the room doubled, from a new analysis, each raise said once on
+    stdout with the option to set, until the run reaches the state of the run with MUMPS's
+    default room (max displacement to 1e-10) without halving a step. For the whole system
+    (scenes/fsi_mumps.opts' -pc_type lu; its Jacobian kept across the steps of a linear scene)
+    and for the fluid split of scenes/fsi_fieldsplit.opts."""
+    split = ["-options_file", os.path.join(SCENES, "fsi_fieldsplit.opts")]
+    for opts, option in (([], "-mat_mumps_icntl_14"), (split, "-fieldsplit_fluid_mat_mumps_icntl_14")):
+        reference = fsi("-t_final", 1e-3, *opts)
+        raised = fsi("-t_final", 1e-3, *opts, option, 0, "-max_workspace_raises", 6)
+        lines = re.findall(rf"step 1: the factorization of -\w*pc_type ran out of workspace: {option} raised from (\d+) to (\d+)", raised["out"])
+        print(option, "raised", lines)
+        assert lines and lines[0] == ("0", "20") and all(int(b) == 2 * int(a) for a, b in lines[1:]), lines
+        assert all(s["cuts"] == 0 for s in raised["steps"]) and len(raised["steps"]) == 2, raised["steps"]
+        between(abs(raised["results"]["max_displacement"] / reference["results"]["max_displacement"] - 1), 0, 1e-10, f"max displacement, {option} raised from 0 / default")
+
+
+@case
 def fsi_facsi_exact():
     """FaCSI with exact inner solves (LU for the structure, the geometry and the fluid with
     Dirichlet rows on the interface) is P_DN^-1: its GMRES residuals equal, iteration by

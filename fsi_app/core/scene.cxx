@@ -37,6 +37,7 @@ PetscErrorCode ReadScene(Scene &sc)
   PetscCall(opt.Enum("-time_scheme", "differences in time for the inertia", TimeSchemeNames, &sc.scheme, RUN));
   PetscCall(opt.Int("-structure_load_steps", "apply the load in this many equal increments (statics)", &sc.loadSteps, Range{1, 10000}, RUN));
   PetscCall(opt.Int("-max_step_cuts", "a failed step (Newton diverged, element inverted) is halved up to this many times before the run stops", &sc.maxCuts, Range{0, 20}, RUN));
+  PetscCall(opt.Int("-max_workspace_raises", "a direct solver (MUMPS) that runs out of workspace gets twice its room (its -..._mat_mumps_icntl_14, said on stdout) and the step is repeated, up to this many times in the run; 0: the run stops and names the option", &sc.maxWorkspaceRaises, Range{0, 10}, RUN));
   PetscCall(opt.Int("-time_predictor_order", "Newton's first iterate of a time step: the polynomial through the last k+1 states extrapolated to the new time (0: the last state; at most 1 with backward_euler, 3 with bdf2)", &sc.predictorOrder, Range{0, 3}, RUN));
   PetscCall(opt.Bool("-jacobian_keep_constant", "assemble the Jacobian rows that never change (the harmonic extension's) once and keep their values; false: at every Newton step", &sc.keepConstant, RUN));
   PetscCall(opt.Bool("-jacobian_direct_add", "add the element matrices straight into the Jacobian's CSR storage (AIJ); false: through MatSetValues", &sc.directAdd, RUN));

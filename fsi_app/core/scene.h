@@ -21,6 +21,7 @@ struct Scene {
   /* time, or load increments in statics */
   PetscReal  dt = 0, tFinal = 0.01;
   PetscInt   loadSteps = 1, maxCuts = 4;
+  PetscInt   maxWorkspaceRaises = 3; /* a direct solver out of workspace: its room doubled and the step repeated */
   PetscInt   predictorOrder = 1; /* Newton's first iterate from the past states (core/time_history.h) */
   TimeScheme scheme    = BACKWARD_EULER;
   PetscBool  keepConstant = PETSC_TRUE; /* the constant Jacobian blocks assembled once (core/constant_rows.h) */

@@ -249,14 +249,32 @@ static PetscErrorCode PCDestroy_FaCSIFluid(PC pc)
   PetscFunctionBegin;
   PetscCall(PCReset_FaCSIFluid(pc));
   PetscCall(KSPDestroy(&fs->ksp));
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "PCFaCSIFluidGetKSP_C", nullptr));
   delete fs;
   pc->data = nullptr;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCFaCSIFluidGetKSP_FaCSIFluid(PC pc, KSP *ksp)
+{
+  PetscFunctionBegin;
+  *ksp = ((PC_FaCSIFluid *)pc->data)->ksp;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PCFaCSIFluidGetKSP(PC pc, KSP *ksp)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  *ksp = nullptr;
+  PetscTryMethod(pc, "PCFaCSIFluidGetKSP_C", (PC, KSP *), (pc, ksp));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode PCCreate_FaCSIFluid(PC pc)
 {
   PetscFunctionBegin;
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "PCFaCSIFluidGetKSP_C", PCFaCSIFluidGetKSP_FaCSIFluid));
   pc->data                = new PC_FaCSIFluid;
   pc->ops->setup          = PCSetUp_FaCSIFluid;
   pc->ops->apply          = PCApply_FaCSIFluid;

@@ -27,4 +27,7 @@ namespace fsi {
 
 PetscErrorCode PCRegisterFaCSIFluid();
 
+/* The inner KSP of F^ (prefix -<prefix>dirichlet_), or null before the PC's first set-up. */
+PetscErrorCode PCFaCSIFluidGetKSP(PC pc, KSP *ksp);
+
 } // namespace fsi

@@ -169,6 +169,8 @@ static PetscErrorCode Solve(const Scene &sc, Blocks &b, DM dm, SNES snes, Vec x,
     for (Block *blk : b.list) PetscCall(blk->Predict(t, y));
     PetscFunctionReturn(0);
   };
+  PetscInt raisesLeft = sc.maxWorkspaceRaises;
+  loop.repair = [&](PetscInt k, PetscBool halving, PetscBool *repeat) { return RepairFactors(snes, k, halving, &raisesLeft, repeat); };
   loop.afterStep = [&](PetscInt k, PetscReal t, Vec y) -> PetscErrorCode {
     PetscFunctionBegin;
     for (Block *blk : b.list) PetscCall(blk->AfterStep(dm, k, t, y));

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-2-Clause
 #include "solver.h"
+#include "facsi/fluid_pc.h"
 #include <algorithm>
+#include <string>
+#include <vector>
 
 namespace fsi {
 
@@ -68,14 +71,21 @@ PetscErrorCode CreateSolver(const Scene &sc, DM dm, const Blocks &b, SNES *snes)
   PetscFunctionReturn(0);
 }
 
-/* Which factorization made a KSP fail, through nested field splits, as a sentence with its cure.
+/* A factorization whose solve failed: its KSP, PC, and error reduced over the ranks. */
+struct FailedFactor {
+  KSP            ksp;
+  PC             pc;
+  MatFactorError error;
+};
+
+/* The factorizations that made a KSP fail, through nested field splits and FaCSI's fluid step.
    Every step is reduced over the ranks: a factor fails on some of them only, and all of them
    must walk the same splits. */
-static PetscErrorCode FactorFailure(KSP ksp, std::string *why)
+static PetscErrorCode FailedFactors(KSP ksp, std::vector<FailedFactor> &found)
 {
   KSPConvergedReason reason;
   PC                 pc;
-  PetscBool          split, factor;
+  PetscBool          split, facsi, factor;
   PetscMPIInt        failed;
   MPI_Comm           comm = PetscObjectComm((PetscObject)ksp);
 
@@ -86,29 +96,97 @@ static PetscErrorCode FactorFailure(KSP ksp, std::string *why)
   if (!failed) PetscFunctionReturn(0);
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &split));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFACSIFLUID, &facsi));
   PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &factor, PCLU, PCCHOLESKY, ""));
   if (split) {
     KSP     *sub;
     PetscInt n;
     PetscCall(PCFieldSplitGetSubKSP(pc, &n, &sub));
-    for (PetscInt i = 0; i < n && why->empty(); i++) PetscCall(FactorFailure(sub[i], why));
+    for (PetscInt i = 0; i < n; i++) PetscCall(FailedFactors(sub[i], found));
     PetscCall(PetscFree(sub));
+  } else if (facsi) {
+    KSP inner;
+    PetscCall(PCFaCSIFluidGetKSP(pc, &inner));
+    if (inner) PetscCall(FailedFactors(inner, found));
   } else if (factor) {
     Mat            F;
     MatFactorError err;
-    MatSolverType  solver;
-    const char    *prefix;
-    PetscMPIInt    e;
     PetscCall(PCFactorGetMatrix(pc, &F));
     PetscCall(MatFactorGetError(F, &err));
-    e = (PetscMPIInt)err;
+    PetscMPIInt e = (PetscMPIInt)err;
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &e, 1, MPI_INT, MPI_MAX, comm));
-    PetscCall(PCFactorGetMatSolverType(pc, &solver));
-    PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
-    const std::string pre = prefix ? prefix : "";
-    if (e == MAT_FACTOR_OUTMEMORY) *why = "the factorization of -" + pre + "pc_type ran out of workspace" + (std::string(solver) == MATSOLVERMUMPS ? " (MUMPS: raise -" + pre + "mat_mumps_icntl_14, the percent added to its analysis' estimate)" : "");
-    else if (e == MAT_FACTOR_STRUCT_ZEROPIVOT || e == MAT_FACTOR_NUMERIC_ZEROPIVOT) *why = "the factorization of -" + pre + "pc_type met a zero pivot: that operator is singular (are its rigid or constant modes fixed by a condition?)";
-    else if (e) *why = "the factorization of -" + pre + "pc_type failed in " + solver;
+    if (e) found.push_back({ksp, pc, (MatFactorError)e});
+  }
+  PetscFunctionReturn(0);
+}
+
+static std::string Prefix(KSP ksp)
+{
+  const char *prefix;
+  return KSPGetOptionsPrefix(ksp, &prefix) || !prefix ? std::string() : std::string(prefix);
+}
+
+static PetscBool IsMUMPS(PC pc)
+{
+  MatSolverType solver;
+  return (PetscBool)(!PCFactorGetMatSolverType(pc, &solver) && solver && !strcmp(solver, MATSOLVERMUMPS));
+}
+
+/* Which factorization made a KSP fail, as a sentence with its cure. */
+static PetscErrorCode FactorFailure(KSP ksp, std::string *why)
+{
+  std::vector<FailedFactor> found;
+  MatSolverType             solver;
+
+  PetscFunctionBegin;
+  PetscCall(FailedFactors(ksp, found));
+  if (found.empty()) PetscFunctionReturn(0);
+  const FailedFactor &f   = found.front();
+  const std::string   pre = Prefix(f.ksp);
+  PetscCall(PCFactorGetMatSolverType(f.pc, &solver));
+  if (f.error == MAT_FACTOR_OUTMEMORY) *why = "the factorization of -" + pre + "pc_type ran out of workspace" + (IsMUMPS(f.pc) ? " (MUMPS: raise -" + pre + "mat_mumps_icntl_14, the percent added to its analysis' estimate, or -max_workspace_raises)" : "");
+  else if (f.error == MAT_FACTOR_STRUCT_ZEROPIVOT || f.error == MAT_FACTOR_NUMERIC_ZEROPIVOT) *why = "the factorization of -" + pre + "pc_type met a zero pivot: that operator is singular (are its rigid or constant modes fixed by a condition?)";
+  else *why = "the factorization of -" + pre + "pc_type failed in " + solver;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RepairFactors(SNES snes, PetscInt step, PetscBool halving, PetscInt *raisesLeft, PetscBool *repeat)
+{
+  SNESConvergedReason       reason;
+  KSP                       ksp;
+  std::vector<FailedFactor> found;
+
+  PetscFunctionBegin;
+  *repeat = PETSC_FALSE;
+  PetscCall(SNESGetConvergedReason(snes, &reason));
+  if (reason != SNES_DIVERGED_LINEAR_SOLVE) PetscFunctionReturn(0);
+  PetscCall(SNESGetKSP(snes, &ksp));
+  PetscCall(FailedFactors(ksp, found));
+  for (const FailedFactor &f : found) {
+    if (f.error != MAT_FACTOR_OUTMEMORY || !IsMUMPS(f.pc) || *raisesLeft == 0) continue;
+    const std::string pre = Prefix(f.ksp), name = "-" + pre + "mat_mumps_icntl_14";
+    Mat               F;
+    PetscInt          was;
+    PetscCall(PCFactorGetMatrix(f.pc, &F));
+    PetscCall(MatMumpsGetIcntl(F, 14, &was));
+    const PetscInt now = was > 0 ? 2 * was : 20;
+    PetscCall(PetscOptionsSetValue(nullptr, name.c_str(), std::to_string(now).c_str()));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "step %" PetscInt_FMT ": the factorization of -%spc_type ran out of workspace: %s raised from %" PetscInt_FMT " to %" PetscInt_FMT " (MUMPS's room beyond its analysis' estimate, in percent), and the step repeated\n", step, pre.c_str(), name.c_str(), was, now));
+    *repeat = PETSC_TRUE;
+  }
+  if (*repeat) (*raisesLeft)--;
+  if (!*repeat && !halving) PetscFunctionReturn(0); /* the run stops: CheckFinished() reads the failed factors */
+  for (const FailedFactor &f : found) {
+    /* a new factor: its KSP's next solve analyses the operator again and reads the options (a
+       factor kept by a lagged Jacobian too) */
+    Mat A, P;
+    PetscCall(KSPGetOperators(f.ksp, &A, &P));
+    PetscCall(PetscObjectReference((PetscObject)A));
+    PetscCall(PetscObjectReference((PetscObject)P));
+    PetscCall(PCReset(f.pc));
+    PetscCall(KSPSetOperators(f.ksp, A, P));
+    PetscCall(MatDestroy(&A));
+    PetscCall(MatDestroy(&P));
   }
   PetscFunctionReturn(0);
 }

@@ -62,8 +62,13 @@ static PetscErrorCode Advance(const TimeLoop &loop, PetscReal t, PetscInt depth,
   rec.newton += n, rec.krylov += k;
   if (rec.reason == SNES_CONVERGED_SNORM_RELATIVE) PetscCall(WarnIfStagnated(loop.snes, t + dt));
   *ok = (PetscBool)(rec.reason > 0);
+  PetscBool repeat = PETSC_FALSE;
+  if (!*ok && loop.repair) PetscCall(loop.repair(rec.step, (PetscBool)(depth < loop.maxCuts), &repeat));
   if (*ok) PetscCall(TimeHistoryPush(h, x, t + dt));
-  else if (depth < loop.maxCuts) {
+  else if (repeat) {
+    PetscCall(VecCopy(x0, x));
+    PetscCall(Advance(loop, t, depth, x, rec, ok));
+  } else if (depth < loop.maxCuts) {
     TimeHistory saved;
     PetscCall(PetscInfo(loop.snes, "step from t = %g with dt = %g failed (%s): two halves\n", (double)t, (double)dt, SNESConvergedReasons[rec.reason]));
     rec.cuts++;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-2-Clause
 /* The loop over time steps (dynamics) or load increments (statics), one nonlinear solve each.
-   A step that fails (Newton diverged, an element inverted, the linear solver failed) is retried
-   as two half steps, recursively up to a limit, with the time scheme's past states
+   A step that fails (Newton diverged, an element inverted, the linear solver failed) is first
+   mended where it can be (a direct solver given more workspace: the step repeated at its size),
+   else retried as two half steps, recursively up to a limit, with the time scheme's past states
    interpolated to the finer step; the outer steps keep their size, so output times and
    checkpoints do not depend on the cuts. */
 #pragma once
@@ -24,6 +25,7 @@ struct TimeLoop {
   std::function<PetscErrorCode(PetscReal t)> setTime;   /* loads at time (or load fraction) t */
   std::function<PetscErrorCode(PetscReal t, Vec x)> predict; /* the first iterate of the step to t (may be empty) */
   std::function<PetscErrorCode(PetscInt step, PetscReal t, Vec x)> afterStep; /* output, checkpoints */
+  std::function<PetscErrorCode(PetscInt step, PetscBool halving, PetscBool *repeat)> repair; /* after a failed step, before it is halved (halving) or not: mend what failed; *repeat: try it at its size again (may be empty) */
 };
 
 /* Steps first+1 .. loop.steps from state x at step `first`; one record per step attempted.
