@@ -16,6 +16,7 @@
 #include "io/xdmf.h"
 #include "mesh/mesh.h"
 #include "core/sparsity.h"
+#include "core/split_setup.h"
 #include "core/time_history.h"
 #include <petscsnes.h>
 #include <map>
@@ -25,11 +26,6 @@
 namespace fsi {
 
 struct PrescribedMotion; /* verification/mms.h */
-
-/* When the preconditioner of a split is set up again: every Newton step, at the first Newton
-   step of each time step, or once per run (rows that never change). */
-enum SplitSetUp { SETUP_EVERY_NEWTON, SETUP_EVERY_STEP, SETUP_ONCE };
-extern const char *const SplitSetUpNames[];
 
 /* The role of -structure_region and -fluid_region (GroupUse): the two must be different groups. */
 inline const char *const RegionsRole = "regions of the wall and the fluid";

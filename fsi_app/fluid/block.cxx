@@ -96,6 +96,7 @@ PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &probl
     const char *const policies[] = {"every_newton", "every_step", "SplitSetUp", "", nullptr}; /* SplitSetUp's order */
     PetscCall(r.Choice("-fluid_pc_setup", "when the fluid split's preconditioner (FaCSI's fluid step) is rebuilt: every Newton step, or every time step from its first Newton step's matrices", policies, &o.pcSetUp, RUN));
   }
+  PetscCall(ReadSetUpInterval(r, "fluid", &o.pcSetUpInterval));
   PetscCall(r.Bool("-fluid_shape_derivatives", "on a moving mesh, the fluid's Jacobian holds its derivative in the mesh displacement (exact Newton); false: quasi-Newton", &o.shapeDerivatives, RUN));
   n = 3;
   PetscBool set;
@@ -104,6 +105,7 @@ PetscErrorCode FluidBlock::ReadOptions(std::map<std::string, std::string> &probl
   PetscCall(r.Enum("-mms_flow", "-mms: the manufactured flow (exact velocity on the boundary but -fluid_outlet, exact traction there)", FlowMMSKindNames, &o.mmsFlow, PROBLEM));
   PetscCall(r.Real("-mms_ramp", "-mms: the trigonometric manufactured flow rises as sin^2(pi t / 2T) over this time T (s); 0: steady", &o.mmsRamp, NonNegative, PROBLEM));
   PetscOptionsEnd();
+  PetscCall(CheckSetUpInterval("fluid", o.pcSetUpInterval, SetUpPolicy()));
   const std::vector<std::string> outlets = SplitList(o.outlet);
   for (size_t k = 0; k < outlets.size(); k++)
     PetscCheck(std::count(outlets.begin(), outlets.end(), outlets[k]) == 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-fluid_outlet %s: the group %s is named twice; each outlet is named once", o.outlet, outlets[k].c_str());

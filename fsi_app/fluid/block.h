@@ -47,6 +47,7 @@ struct FluidOptions {
   PetscReal backflow = 0.2;                /* beta of the backflow term on the outlets */
   PetscBool shapeDerivatives = PETSC_TRUE; /* on a moving mesh the Jacobian holds D_{d_f} R (exact Newton) */
   PetscInt  pcSetUp          = SETUP_EVERY_NEWTON; /* its split's preconditioner rebuilt every Newton step or every time step (SplitSetUp) */
+  PetscInt  pcSetUpInterval  = 1;                  /* every_step: rebuilt at every this many time steps */
   std::vector<PetscReal> probes;           /* points (3 each) where the pressure is recorded */
   PetscReal   shearFrom = 0;               /* the wall shear stress's time average and OSI from this time */
   PetscReal   poiseuille[3] = {0, 0, 0};   /* verification: R, L, pressure drop */
@@ -59,6 +60,7 @@ public:
   explicit FluidBlock(const Scene &sc) : sc(sc) {}
   const char    *Name() const override { return "fluid"; }
   SplitSetUp     SetUpPolicy() const override { return (SplitSetUp)opt.pcSetUp; }
+  PetscInt       SetUpInterval() const override { return opt.pcSetUpInterval; }
   PetscErrorCode Wire(const std::vector<Block *> &scene) override;
   PetscErrorCode ReadOptions(std::map<std::string, std::string> &problem) override;
   PetscErrorCode Check() const override;

@@ -5,8 +5,6 @@
 
 namespace fsi {
 
-const char *const SplitSetUpNames[] = {"every_newton", "every_step", "once"};
-
 struct SplitSetUps {
   SNES                       snes;
   std::vector<KSP>           ksp; /* borrowed: PCFIELDSPLIT owns them */

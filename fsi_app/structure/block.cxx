@@ -65,7 +65,7 @@ PetscErrorCode StructureBlock::ReadOptions(std::map<std::string, std::string> &p
     PetscCall(r.Choice("-structure_pc_setup", "when the structure split's preconditioner is rebuilt (auto: once for a linear wall, every time step otherwise)", policies, &policy, RUN));
     o.pcSetUp = policy == 3 ? -1 : policy;
   }
-  PetscCall(r.Int("-structure_pc_setup_interval", "with every_step (the nonlinear wall's default): the structure split's preconditioner rebuilt at every k-th Newton solve of the run (a time step; one halved after a failed Newton counts again), kept in between", &o.pcSetUpInterval, AtLeast(1), RUN));
+  PetscCall(ReadSetUpInterval(r, "structure", &o.pcSetUpInterval));
   PetscCall(r.Points("-structure_probes", "points x1,y1,z1,x2,... (at most 20, reference configuration) where the wall's displacement is recorded every step (in the run report)", o.probes));
   PetscCall(r.Real("-mms_amplitude", "-mms: the amplitude a of the manufactured displacement d = a sin(pi x)sin(pi y)sin(pi z)(1,1,1) on the unit cube (cm)", &o.mmsAmplitude, Any, PROBLEM));
   n = 2;
@@ -75,7 +75,7 @@ PetscErrorCode StructureBlock::ReadOptions(std::map<std::string, std::string> &p
   PetscOptionsEnd();
   PetscCheck(!o.centerline[0] || o.material == ARTERIAL, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-structure_centerline %s: only the arterial law (-structure_material arterial) has fibres", o.centerline);
   PetscCheck(!o.frameCheck || o.centerline[0], PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-structure_frame_check_z_axis: it checks the frame of a centreline (-structure_centerline FILE)");
-  PetscCheck(o.pcSetUpInterval == 1 || SetUpPolicy() == SETUP_EVERY_STEP, PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP, "-structure_pc_setup_interval %" PetscInt_FMT ": only with a set-up every time step (-structure_pc_setup every_step, the nonlinear wall's default); this run's is %s", o.pcSetUpInterval, SplitSetUpNames[SetUpPolicy()]);
+  PetscCall(CheckSetUpInterval("structure", o.pcSetUpInterval, SetUpPolicy()));
   if (o.centerline[0]) PetscCall(CenterlineRead(PETSC_COMM_WORLD, "-structure_centerline", o.centerline, centerline)); /* checked before the mesh */
   PetscFunctionReturn(0);
 }
